@@ -1,0 +1,51 @@
+/// \file
+/// Compiler and bit-twiddling helpers that every chapter uses.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+/// Forces inlining where the compiler's heuristics would otherwise keep a call in a hot loop.
+#define RTK_INLINE inline __attribute__((always_inline))
+
+/// Branch hints for the rare paths of traversal loops (empty stack, degenerate input).
+#define RTK_LIKELY(x) __builtin_expect(!!(x), 1)
+#define RTK_UNLIKELY(x) __builtin_expect(!!(x), 0)
+
+namespace rtk {
+
+/// Index of the lowest set bit (`bsf`/`tzcnt`); the mask must not be zero.
+RTK_INLINE int bit_scan_forward(uint32_t mask) { return std::countr_zero(mask); }
+
+/// Index of the lowest set bit, which is cleared from the mask (`bsf` then `btc`).
+RTK_INLINE int pop_lowest_bit(uint32_t& mask) {
+  const int index = std::countr_zero(mask);
+  mask &= mask - 1;
+  return index;
+}
+
+/// Number of set bits.
+RTK_INLINE int pop_count(uint32_t mask) { return std::popcount(mask); }
+
+/// Iterates over the indices of the set bits of a mask, lowest first:
+/// `for (int i : set_bits(movemask(hit))) ...`.
+class set_bits {
+ public:
+  explicit set_bits(uint32_t mask) : mask_(mask) {}
+  struct iterator {
+    uint32_t mask;
+    int operator*() const { return std::countr_zero(mask); }
+    iterator& operator++() {
+      mask &= mask - 1;
+      return *this;
+    }
+    bool operator!=(const iterator& other) const { return mask != other.mask; }
+  };
+  iterator begin() const { return {mask_}; }
+  iterator end() const { return {0}; }
+
+ private:
+  uint32_t mask_;
+};
+
+}  // namespace rtk

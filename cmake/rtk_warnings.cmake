@@ -1,0 +1,10 @@
+# Warnings and sanitizers shared by every RTK target (added through rtk_defaults).
+add_library(rtk_defaults INTERFACE)
+target_compile_options(rtk_defaults INTERFACE -Wall -Wextra -ffp-contract=off)
+target_include_directories(rtk_defaults INTERFACE
+  ${PROJECT_SOURCE_DIR}/chapters ${PROJECT_SOURCE_DIR}/lib)
+if(RTK_SANITIZE)
+  target_compile_options(rtk_defaults INTERFACE -fsanitize=${RTK_SANITIZE} -fno-omit-frame-pointer
+                                                -fno-sanitize-recover=all)
+  target_link_options(rtk_defaults INTERFACE -fsanitize=${RTK_SANITIZE})
+endif()
