@@ -59,6 +59,7 @@ CpuFeatures detect() {
   f.popcnt = bit(leaf1.ecx, 23);
   f.fma = bit(leaf1.ecx, 12);
   f.f16c = bit(leaf1.ecx, 29);
+  // [ch01-os-state]
   const bool osxsave = bit(leaf1.ecx, 27);
   f.avx = bit(leaf1.ecx, 28);
   if (osxsave) {
@@ -66,6 +67,7 @@ CpuFeatures detect() {
     f.os_saves_ymm = (xcr0 & 0x6) == 0x6;
     f.os_saves_zmm = f.os_saves_ymm && (xcr0 & 0xE0) == 0xE0;
   }
+  // [ch01-os-state]
   if (leaf0.eax >= 7) {
     const CpuidRegisters leaf7 = cpuid(7, 0);
     f.bmi1 = bit(leaf7.ebx, 3);

@@ -8,6 +8,7 @@
 
 #include "01_base/cpu_features.h"
 
+// [ch01-dispatch]
 /// Declares the same entity once in each ISA's namespace (rtk::scalar, rtk::sse4, rtk::avx2,
 /// rtk::avx512). Use it inside `namespace rtk`.
 #define RTK_DECLARE_FOR_EACH_ISA(...)   \
@@ -34,5 +35,6 @@ T pick_isa(Isa isa, T scalar_entry, T sse4_entry, T avx2_entry, T avx512_entry) 
   }
   return scalar_entry;
 }
+// [ch01-dispatch]
 
 }  // namespace rtk

@@ -12,7 +12,15 @@
 ///   rounding and NaN behaviour is that of the shuffle-and-add code the ISAs use;
 /// - fmadd(a, b, c) is a * b + c rounded once where the ISA has FMA, and twice where it has not:
 ///   the one operation whose result the variants may legitimately disagree on (by one rounding
-///   of the product), together with the reciprocal approximations rcp_fast and rcp.
+///   of the product), together with the reciprocal approximations rcp_fast and rcp;
+/// - a NaN that arithmetic produces is some NaN: x86 passes on the first operand's payload, and
+///   the compiler may swap the operands of + and *, so payloads are not part of the contract.
+///   Operations that only move bits (loads, select, min, max, shuffles, sign operations) keep
+///   every bit, NaN payloads included.
+///
+/// The intrinsic backends specialise vbool, vint and vfloat for their widths and name the
+/// register `m`, never `v`: a portable loop instantiated for a native width therefore fails to
+/// compile instead of running silently lane by lane.
 #pragma once
 
 #include <cmath>
@@ -27,6 +35,11 @@ namespace rtk::RTK_ISA {
 template <int N> struct vbool;
 template <int N> struct vint;
 template <int N> struct vfloat;
+
+/// Whether a wrapper type keeps its lanes in the portable array `v` (the intrinsic backends
+/// assert that theirs do not, so no portable loop can run on a native width).
+template <class T>
+concept portable_lanes = requires(T x) { x.v; };
 
 // [ch01-portable-vbool]
 /// A mask of N lanes, the result of comparing vectors.
@@ -85,7 +98,7 @@ RTK_VINT_BINARY(&)
 RTK_VINT_BINARY(|)
 RTK_VINT_BINARY(^)
 #undef RTK_VINT_BINARY
-/// Shifts by the same count in every lane: left, arithmetic right, logical right.
+/// Shifts by the same count n in every lane, 0 <= n < 32: left, arithmetic right, logical right.
 template <int N> vint<N> operator<<(vint<N> a, int n) { vint<N> r; for (int i = 0; i < N; ++i) r.v[i] = int32_t(uint32_t(a.v[i]) << n); return r; }
 template <int N> vint<N> operator>>(vint<N> a, int n) { vint<N> r; for (int i = 0; i < N; ++i) r.v[i] = a.v[i] >> n; return r; }
 template <int N> vint<N> srl(vint<N> a, int n) { vint<N> r; for (int i = 0; i < N; ++i) r.v[i] = int32_t(uint32_t(a.v[i]) >> n); return r; }
@@ -151,12 +164,18 @@ template <int N> vfloat<N> fnmsub(vfloat<N> a, vfloat<N> b, vfloat<N> c) { vfloa
 template <int N> vfloat<N> sqrt(vfloat<N> a) { vfloat<N> r; for (int i = 0; i < N; ++i) r.v[i] = std::sqrt(a.v[i]); return r; }
 template <int N> vfloat<N> floor(vfloat<N> a) { vfloat<N> r; for (int i = 0; i < N; ++i) r.v[i] = std::floor(a.v[i]); return r; }
 template <int N> vfloat<N> ceil(vfloat<N> a) { vfloat<N> r; for (int i = 0; i < N; ++i) r.v[i] = std::ceil(a.v[i]); return r; }
-/// An approximation of 1/a: relative error below 1.5 * 2^-12 for normal a whose reciprocal is
-/// normal (the hardware estimate; the portable backend returns 1/a exactly).
+// [ch01-portable-rcp]
+/// An approximation of 1/a (rcpps; rcp14ps where AVX-512 is allowed; the portable backend returns
+/// 1/a exactly). Its domain is 2^-126 <= |a| < 2^125, a normal number whose reciprocal is normal:
+/// there the relative error is below 1.5 * 2^-12. Every backend returns +-inf for +-0, +-0 for
+/// +-inf and NaN for NaN. Outside the domain only the sign is promised: rcpps reads a denormal a
+/// as zero (giving inf) and flushes a tiny reciprocal to zero, where the others do not.
 template <int N> vfloat<N> rcp_fast(vfloat<N> a) { vfloat<N> r; for (int i = 0; i < N; ++i) r.v[i] = 1.0f / a.v[i]; return r; }
-/// 1/a to within 2^-21 relative error for the same inputs: the estimate refined by one
-/// Newton-Raphson step, x' = x (2 - a x).
+/// 1/a to within 2^-21 relative error on rcp_fast's domain, with the same special values: the
+/// estimate x refined by one Newton-Raphson step, x + x (1 - a x). That step turns 0 * inf into
+/// NaN for a = +-0 and a = +-inf, so the backends keep the estimate wherever the step gives NaN.
 template <int N> vfloat<N> rcp(vfloat<N> a) { return rcp_fast(a); }
+// [ch01-portable-rcp]
 
 // Sign-bit operations work on the bits, so they treat -0, NaN and infinities alike.
 template <int N> vint<N> as_int(vfloat<N> a) { vint<N> r; std::memcpy(r.v, a.v, sizeof r.v); return r; }
@@ -227,6 +246,7 @@ template <int N> int min_index(vfloat<N> a) {
 /// (shufps with one source; AVX shuffles work per 128-bit half in the same way).
 template <int i0, int i1, int i2, int i3, int N> vfloat<N> shuffle(vfloat<N> a) {
   static_assert(N % 4 == 0, "shuffle works on groups of four lanes");
+  static_assert(0 <= (i0 | i1 | i2 | i3) && (i0 | i1 | i2 | i3) < 4, "shuffle: lanes 0 to 3");
   vfloat<N> r;
   for (int g = 0; g < N; g += 4) {
     r.v[g + 0] = a.v[g + i0];
@@ -237,6 +257,9 @@ template <int i0, int i1, int i2, int i3, int N> vfloat<N> shuffle(vfloat<N> a) 
   return r;
 }
 /// Every lane takes lane i.
-template <int i, int N> vfloat<N> broadcast_lane(vfloat<N> a) { return vfloat<N>(a.v[i]); }
+template <int i, int N> vfloat<N> broadcast_lane(vfloat<N> a) {
+  static_assert(0 <= i && i < N, "broadcast_lane: no such lane");
+  return vfloat<N>(a.v[i]);
+}
 
 }  // namespace rtk::RTK_ISA

@@ -1,5 +1,6 @@
 #include "rays.h"
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -90,7 +91,10 @@ std::vector<Ray> invalid_rays() {
       Ray r = base;
       float* fields[] = {&r.org.x, &r.org.y, &r.org.z, &r.dir.x, &r.dir.y, &r.dir.z, &r.tnear, &r.tfar};
       *fields[field] = bad;
-      if (field >= 6 && bad == inf) continue;  // tfar = +inf is a valid ray; tnear = +inf is checked below
+      // An infinite tnear, or tfar = +inf, leaves a valid ray: only NaN, and tfar = -inf
+      // (which puts tnear above it), make the interval itself invalid.
+      if (field == 6 && !std::isnan(bad)) continue;
+      if (field == 7 && bad == inf) continue;
       rays.push_back(r);
     }
   }
