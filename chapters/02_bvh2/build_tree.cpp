@@ -1,11 +1,36 @@
 #include "02_bvh2/build_tree.h"
 
+#include <limits>
+#include <stdexcept>
+#include <string>
+
 namespace rtk {
 
 std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh) {
+  // An index past the vertex array would make us read memory that is not ours: refuse the mesh
+  // and say which triangle is wrong. Non-finite vertices only give a non-finite box, which the
+  // builders leave out of the tree (such a triangle can never be hit).
+  const size_t vertex_count = mesh.vertices.size();
+  for (size_t i = 0; i < mesh.size(); ++i)
+    for (uint32_t index : mesh.triangles[i])
+      if (index >= vertex_count)
+        throw std::invalid_argument("triangle " + std::to_string(i) + " names vertex " +
+                                    std::to_string(index) + " of a mesh with " +
+                                    std::to_string(vertex_count) + " vertices");
+  // Box3f::extend follows the SIMD min/max rule, under which a NaN coordinate can vanish from
+  // a box: mark the box of a triangle with a non-finite vertex as NaN outright.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
   std::vector<PrimRef> refs(mesh.size());
-  for (uint32_t i = 0; i < mesh.size(); ++i) refs[i] = PrimRef(mesh.bounds(i), i);
+  for (uint32_t i = 0; i < mesh.size(); ++i) {
+    const bool finite = is_finite(mesh.vertex(i, 0)) && is_finite(mesh.vertex(i, 1)) && is_finite(mesh.vertex(i, 2));
+    refs[i] = PrimRef(finite ? mesh.bounds(i) : Box3f(Vec3f(nan), Vec3f(nan)), i);
+  }
   return refs;
+}
+
+bool is_buildable(const PrimRef& ref) {
+  const Vec3f lo = ref.lower, hi = ref.upper;
+  return is_finite(lo) && is_finite(hi) && lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z;
 }
 
 template <int N>
@@ -29,5 +54,6 @@ double sah_cost(const BuildTree<N>& tree, double traversal_cost, double intersec
 template double sah_cost<2>(const BuildTree<2>&, double, double);
 template double sah_cost<4>(const BuildTree<4>&, double, double);
 template double sah_cost<8>(const BuildTree<8>&, double, double);
+template double sah_cost<16>(const BuildTree<16>&, double, double);
 
 }  // namespace rtk

@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "01_base/box3.h"
@@ -30,8 +32,15 @@ struct alignas(16) PrimRef {
 static_assert(sizeof(PrimRef) == 32, "two 16-byte halves: lower+id, upper+unused");
 
 /// One reference per triangle of the mesh, in primID order. Zero-area triangles are kept (a
-/// triangle's primID never changes); they are simply never hit.
+/// triangle's primID never changes); they are simply never hit. A triangle with a NaN or
+/// infinite vertex gets a NaN box, which no builder places. Throws std::invalid_argument,
+/// naming the triangle, when a vertex index is out of range.
 std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh);
+
+/// Whether a builder can place the reference: a finite box with lower <= upper. Builders leave
+/// other references (a triangle with a NaN or infinite vertex) out of the tree, so such a
+/// triangle is never hit and never disturbs the boxes of the others.
+bool is_buildable(const PrimRef& ref);
 
 /// A tree whose inner nodes have 2 to N children. A child is either an inner node or a leaf; a
 /// leaf is a range [first, first + count) of `prim_ids`.
@@ -55,6 +64,62 @@ struct BuildTree {
   bool empty() const { return root.leaf_count == 0 && nodes.empty(); }
 };
 
+/// The number of inner nodes on the longest path from the root down to a leaf: 0 when the
+/// root is a leaf. Traversal stacks are sized from it. Throws std::invalid_argument when a
+/// child names a node that does not come after its parent (the tree would not be a tree).
+template <int N>
+int tree_depth(const BuildTree<N>& tree) {
+  if (tree.root.is_leaf() || tree.nodes.empty()) return 0;
+  // Children come after their parents, so one forward pass settles every node's depth.
+  std::vector<int> depth(tree.nodes.size(), 0);
+  if (tree.root.index >= tree.nodes.size()) throw std::invalid_argument("the root names no node");
+  depth[tree.root.index] = 1;
+  int deepest = 1;
+  for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    const auto& node = tree.nodes[i];
+    for (int c = 0; c < node.num_children; ++c) {
+      const auto& child = node.children[size_t(c)];
+      if (child.is_leaf()) continue;
+      if (child.index <= i || child.index >= tree.nodes.size())
+        throw std::invalid_argument("node " + std::to_string(i) + " names node " +
+                                    std::to_string(child.index) + ", which does not follow it");
+      depth[child.index] = depth[i] + 1;
+      deepest = depth[child.index] > deepest ? depth[child.index] : deepest;
+    }
+  }
+  return deepest;
+}
+
+/// The inner nodes in depth-first order: a node, then the subtrees of its children in slot
+/// order. BVH layouts store their nodes (and leaves) in this order, whatever order the builder
+/// made them in, so that a subtree occupies one stretch of memory. Throws
+/// std::invalid_argument unless every node is reached from the root exactly once.
+template <int N>
+std::vector<uint32_t> depth_first_order(const BuildTree<N>& tree) {
+  std::vector<uint32_t> order;
+  if (tree.root.is_leaf() || tree.nodes.empty()) return order;
+  order.reserve(tree.nodes.size());
+  std::vector<uint8_t> seen(tree.nodes.size(), 0);
+  std::vector<uint32_t> todo = {tree.root.index};
+  while (!todo.empty()) {
+    const uint32_t i = todo.back();
+    todo.pop_back();
+    if (i >= tree.nodes.size() || seen[i])
+      throw std::invalid_argument("node " + std::to_string(i) + " is missing or reached twice");
+    seen[i] = 1;
+    order.push_back(i);
+    const auto& node = tree.nodes[i];
+    if (node.num_children < 0 || node.num_children > N)
+      throw std::invalid_argument("node " + std::to_string(i) + " has " +
+                                  std::to_string(node.num_children) + " children");
+    for (int c = node.num_children - 1; c >= 0; --c)
+      if (!node.children[size_t(c)].is_leaf()) todo.push_back(node.children[size_t(c)].index);
+  }
+  if (order.size() != tree.nodes.size())
+    throw std::invalid_argument("the tree holds nodes its root does not reach");
+  return order;
+}
+
 /// The surface area heuristic cost of a tree (MacDonald and Booth, "Heuristics for ray tracing
 /// using space subdivision", 1990): the expected cost of a random ray that hits the root box,
 /// sum over inner nodes of area/root_area * traversal_cost plus over leaves of
@@ -65,5 +130,6 @@ double sah_cost(const BuildTree<N>& tree, double traversal_cost = 1.0, double in
 extern template double sah_cost<2>(const BuildTree<2>&, double, double);
 extern template double sah_cost<4>(const BuildTree<4>&, double, double);
 extern template double sah_cost<8>(const BuildTree<8>&, double, double);
+extern template double sah_cost<16>(const BuildTree<16>&, double, double);
 
 }  // namespace rtk

@@ -1,0 +1,319 @@
+/// \file
+/// Single-ray traversal of a BVH4/BVH8 with the guide's tricks (section 4.1.1), each one
+/// switched by a compile-time Tricks value, and an optional statistics mode. Generic over the
+/// leaf intersector, like chapter 2's BVH2 traversal.
+#pragma once
+
+#ifndef RTK_ISA
+#error "bvhn_traverser.h belongs to kernel sources compiled once per ISA"
+#endif
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <utility>
+
+#include "01_base/platform.h"
+#include "01_base/simd.h"
+#include "03_bvh4/bvh4.h"
+
+namespace rtk::RTK_ISA {
+
+/// The ray as the N-wide box test sees it: every value broadcast to all lanes.
+template <int N>
+struct BvhNRay {
+  vfloat<N> org_x, org_y, org_z;
+  /// -1/dir: the box test computes (org - plane) * (-1/dir), which equals (plane - org) / dir
+  /// and lets the compiler read the plane straight from memory into the subtraction.
+  vfloat<N> neg_rdir_x, neg_rdir_y, neg_rdir_z;
+  /// The ray's interval, clamped to finite values: unused child slots have all bounds at +inf,
+  /// and only a finite interval keeps such a box out whatever the direction.
+  vfloat<N> tnear, tfar;
+  /// Byte offsets in a node of the near and far rows of each axis, chosen by direction sign.
+  size_t near_x, near_y, near_z, far_x, far_y, far_z;
+};
+
+/// Prepares a valid ray for the N-wide box test, once per ray.
+template <int N>
+RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray) {
+  constexpr float kMax = std::numeric_limits<float>::max();
+  BvhNRay<N> r;
+  r.org_x = vfloat<N>(ray.org.x), r.org_y = vfloat<N>(ray.org.y), r.org_z = vfloat<N>(ray.org.z);
+  // 1/(+-0) = +-inf keeps the sign of a zero component, so the planes chosen below and the
+  // distances computed with them agree.
+  const Vec3f rdir{1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
+  r.neg_rdir_x = vfloat<N>(-rdir.x), r.neg_rdir_y = vfloat<N>(-rdir.y), r.neg_rdir_z = vfloat<N>(-rdir.z);
+  r.tnear = vfloat<N>(ray.tnear > -kMax ? ray.tnear : -kMax);
+  r.tfar = vfloat<N>(ray.tfar < kMax ? ray.tfar : kMax);
+  // [ch03-near-far-offsets]
+  // Rows are N floats; the two rows of an axis are adjacent, lower first.
+  constexpr size_t kRow = sizeof(float) * N;
+  auto near_row = [](int axis, float d) { return size_t(2 * axis) * kRow + (std::signbit(d) ? kRow : 0); };
+  r.near_x = near_row(0, rdir.x), r.near_y = near_row(1, rdir.y), r.near_z = near_row(2, rdir.z);
+  r.far_x = r.near_x ^ kRow, r.far_y = r.near_y ^ kRow, r.far_z = r.near_z ^ kRow;
+  // [ch03-near-far-offsets]
+  return r;
+}
+
+/// Lowers the far end of the ray's interval after a hit.
+template <int N>
+RTK_INLINE void shorten(BvhNRay<N>& r, float tfar) {
+  r.tfar = vfloat<N>(tfar < std::numeric_limits<float>::max() ? tfar : std::numeric_limits<float>::max());
+}
+
+/// Tests the ray against the N children of a node. Returns the hit mask (bit i for child i)
+/// and leaves each child's entry distance in `dist`.
+template <int N, Tricks T>
+RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vfloat<N>& dist) {
+  vfloat<N> nx, ny, nz, fx, fy, fz;
+  if constexpr (T.near_far_by_sign) {
+    // [ch03-box-sign]
+    const char* base = reinterpret_cast<const char*>(&node);
+    auto row = [base](size_t offset) { return vfloat<N>::load(reinterpret_cast<const float*>(base + offset)); };
+    nx = (r.org_x - row(r.near_x)) * r.neg_rdir_x;
+    ny = (r.org_y - row(r.near_y)) * r.neg_rdir_y;
+    nz = (r.org_z - row(r.near_z)) * r.neg_rdir_z;
+    fx = (r.org_x - row(r.far_x)) * r.neg_rdir_x;
+    fy = (r.org_y - row(r.far_y)) * r.neg_rdir_y;
+    fz = (r.org_z - row(r.far_z)) * r.neg_rdir_z;
+    // [ch03-box-sign]
+  } else {
+    // [ch03-box-minmax]
+    const vfloat<N> lx = (r.org_x - vfloat<N>::load(node.lower_x)) * r.neg_rdir_x;
+    const vfloat<N> ux = (r.org_x - vfloat<N>::load(node.upper_x)) * r.neg_rdir_x;
+    const vfloat<N> ly = (r.org_y - vfloat<N>::load(node.lower_y)) * r.neg_rdir_y;
+    const vfloat<N> uy = (r.org_y - vfloat<N>::load(node.upper_y)) * r.neg_rdir_y;
+    const vfloat<N> lz = (r.org_z - vfloat<N>::load(node.lower_z)) * r.neg_rdir_z;
+    const vfloat<N> uz = (r.org_z - vfloat<N>::load(node.upper_z)) * r.neg_rdir_z;
+    nx = min(lx, ux), fx = max(lx, ux);
+    ny = min(ly, uy), fy = max(ly, uy);
+    nz = min(lz, uz), fz = max(lz, uz);
+    // [ch03-box-minmax]
+  }
+  // [ch03-box-combine]
+  // The ray's own limits come last: where a slab gives 0 * inf = NaN (a ray lying in the
+  // plane of a face), min and max return their second operand and the NaN drops out.
+  dist = max(max(nx, ny), max(nz, r.tnear));
+  const vfloat<N> exit = min(min(fx, fy), min(fz, r.tfar));
+  return movemask(dist <= exit);
+  // [ch03-box-combine]
+}
+
+/// One traversal stack entry: a node to visit and its entry distance when it was pushed.
+struct BvhStackEntry {
+  NodeRef ref;
+  float dist;
+};
+
+/// Sorts freshly pushed entries (pushed in slot order) so that the nearest is on top, popped
+/// first. Among equal distances the lower slot goes on top, as in the 2-hit path, so that
+/// switching that path off changes no visit.
+RTK_INLINE void sort_pushed(BvhStackEntry* first, BvhStackEntry* end) {
+  for (BvhStackEntry* i = first + 1; i < end; ++i) {
+    const BvhStackEntry e = *i;
+    BvhStackEntry* j = i;
+    for (; j > first && j[-1].dist <= e.dist; --j) *j = j[-1];
+    *j = e;
+  }
+}
+
+/// The counters a statistics-mode traversal keeps; an empty shell in the fast path.
+template <bool kStats>
+struct StatsCounter {
+  RTK_INLINE void node(uint32_t) {}
+  RTK_INLINE void leaf(uint32_t) {}
+  RTK_INLINE void cull() {}
+};
+template <>
+struct StatsCounter<true> {
+  TraversalStats s;
+  RTK_INLINE void node(uint32_t mask) { ++s.nodes, ++s.children_hit[size_t(pop_count(mask))]; }
+  RTK_INLINE void leaf(uint32_t blocks) { ++s.leaves, s.primitives += blocks; }
+  RTK_INLINE void cull() { ++s.culled; }
+};
+
+/// Traces one valid ray through an N-wide BVH. For a closest hit (kOcclusion false) it returns
+/// whether a hit was found and writes it to `hit`; for occlusion, whether anything blocks.
+template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats>
+bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kStats>& stats) {
+  const typename Leaf::Precalc pre(ray);
+  BvhNRay<N> r = make_bvhn_ray<N>(ray);
+  float tfar = ray.tfar;
+  // Cull at pop needs shrinking hits; an occlusion ray stops at its first hit.
+  constexpr bool kCull = T.cull_at_pop && !kOcclusion;
+
+  BvhStackEntry stack[kBvhStackSize<N>];
+  BvhStackEntry* sp = stack;
+  *sp++ = {kTerminal, -std::numeric_limits<float>::infinity()};  // never culled: ends the loop
+  const std::byte* leaf_bytes = bvh.leaves.bytes.data();
+  bool found = false;
+
+  NodeRef cur = bvh.root;
+  for (;;) {
+    // [ch03-descend]
+    while (!is_leaf(cur)) {
+      const NodeN<N>& node = bvh.node(cur);
+      // Early pop: the next stack entry is read before the box test, off its critical path.
+      BvhStackEntry next;
+      if constexpr (T.early_pop) next = sp[-1];
+      vfloat<N> dist;
+      uint32_t mask = intersect_node<N, T>(node, r, dist);
+      stats.node(mask);
+
+      // 0 children hit.
+      if (mask == 0) {
+        if constexpr (T.early_pop) {
+          --sp;
+          if (kCull && next.dist > tfar) {
+            stats.cull();
+            goto pop;
+          }
+          cur = next.ref;
+          continue;
+        } else {
+          goto pop;
+        }
+      }
+      alignas(64) float d[N];
+      dist.store(d);
+      const int i0 = pop_lowest_bit(mask);
+
+      // 1 child hit: keep going without the stack.
+      if constexpr (T.one_hit_path) {
+        if (mask == 0) {
+          cur = node.children[i0];
+          continue;
+        }
+      }
+      // 2 children hit: push the farther, go to the nearer.
+      if constexpr (T.two_hit_path) {
+        if (mask != 0 && (mask & (mask - 1)) == 0) {
+          const int i1 = bit_scan_forward(mask);
+          const bool swap = d[i1] < d[i0];
+          const int near = swap ? i1 : i0, far = swap ? i0 : i1;
+          *sp++ = {node.children[far], d[far]};
+          cur = node.children[near];
+          continue;
+        }
+      }
+      // More children hit (or a fast path switched off): push them all, walking the mask with
+      // bit scans, sort them nearest-on-top, and continue with the top.
+      BvhStackEntry* const first = sp;
+      *sp++ = {node.children[i0], d[i0]};
+      while (mask != 0) {
+        const int i = pop_lowest_bit(mask);
+        *sp++ = {node.children[i], d[i]};
+      }
+      if constexpr (T.sorted_push) sort_pushed(first, sp);
+      --sp;
+      cur = sp->ref;
+    }
+    // [ch03-descend]
+    if (cur == kTerminal) break;
+    // Leaf: the intersector tests its blocks and, for a closest hit, shortens the ray.
+    {
+      const uint32_t count = leaf_blocks(cur);
+      stats.leaf(count);
+      const auto* blocks = reinterpret_cast<const typename Leaf::Block*>(leaf_bytes + leaf_offset(cur));
+      if constexpr (kOcclusion) {
+        if (Leaf::occluded(pre, ray, blocks, count, tfar)) return true;
+      } else if (Leaf::intersect(pre, ray, blocks, count, hit, tfar)) {
+        found = true;
+        shorten(r, tfar);
+      }
+    }
+  pop:
+    // [ch03-pop]
+    --sp;
+    if constexpr (kCull) {
+      while (sp->dist > tfar) {
+        stats.cull();
+        --sp;
+      }
+    }
+    cur = sp->ref;
+    // [ch03-pop]
+  }
+  return found;
+}
+
+/// Traces rays[i] into hits[i] with one trick configuration; statistics go to `stats` when
+/// kStats is set. Invalid rays miss without traversal.
+template <int N, class Leaf, Tricks T, bool kStats>
+void intersect_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<Hit> hits, TraversalStats* stats) {
+  StatsCounter<kStats> counter;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    Hit hit;
+    if (is_valid(rays[i])) {
+      if constexpr (kStats) ++counter.s.rays;
+      traverse_bvhn<N, Leaf, T, false, kStats>(bvh, rays[i], hit, counter);
+    }
+    hits[i] = hit;
+  }
+  if constexpr (kStats) *stats += counter.s;
+  else (void)stats;
+}
+
+/// Occlusion of rays[i] into occluded[i] with one trick configuration.
+template <int N, class Leaf, Tricks T, bool kStats>
+void occluded_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded, TraversalStats* stats) {
+  StatsCounter<kStats> counter;
+  Hit unused;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    bool blocked = false;
+    if (is_valid(rays[i])) {
+      if constexpr (kStats) ++counter.s.rays;
+      blocked = traverse_bvhn<N, Leaf, T, true, kStats>(bvh, rays[i], unused, counter);
+    }
+    occluded[i] = blocked ? 1 : 0;
+  }
+  if constexpr (kStats) *stats += counter.s;
+  else (void)stats;
+}
+
+/// The kernels of one width and leaf intersector for every configuration of kTrickConfigs, with
+/// and without statistics, chosen at run time from a table.
+template <int N, class Leaf>
+struct BvhNKernels {
+  using IntersectFn = void (*)(const BVHN<N>&, std::span<const Ray>, std::span<Hit>, TraversalStats*);
+  using OccludedFn = void (*)(const BVHN<N>&, std::span<const Ray>, std::span<uint8_t>, TraversalStats*);
+
+  template <size_t... I>
+  static constexpr auto intersect_table(std::index_sequence<I...>) {
+    return std::array<IntersectFn, 2 * sizeof...(I)>{
+        &intersect_rays<N, Leaf, kTrickConfigs[I].tricks, false>...,
+        &intersect_rays<N, Leaf, kTrickConfigs[I].tricks, true>...};
+  }
+  template <size_t... I>
+  static constexpr auto occluded_table(std::index_sequence<I...>) {
+    return std::array<OccludedFn, 2 * sizeof...(I)>{
+        &occluded_rays<N, Leaf, kTrickConfigs[I].tricks, false>...,
+        &occluded_rays<N, Leaf, kTrickConfigs[I].tricks, true>...};
+  }
+
+  /// The table index of a configuration, or an exception naming the compiled ones.
+  static size_t index(const BVHN<N>& bvh, const Tricks& tricks, bool with_stats, size_t rays, size_t results) {
+    require_same_size(rays, results);
+    require_layout(bvh.leaves, Leaf::kLayout);
+    const size_t i = trick_config_index(tricks);
+    if (i == kTrickConfigCount)
+      throw std::invalid_argument("this trick configuration is not compiled; the compiled ones are: " +
+                                  trick_config_names());
+    return i + (with_stats ? kTrickConfigCount : 0);
+  }
+
+  static void intersect(const BVHN<N>& bvh, const Tricks& tricks, std::span<const Ray> rays,
+                        std::span<Hit> hits, TraversalStats* stats) {
+    static constexpr auto table = intersect_table(std::make_index_sequence<kTrickConfigCount>{});
+    table[index(bvh, tricks, stats != nullptr, rays.size(), hits.size())](bvh, rays, hits, stats);
+  }
+  static void occluded(const BVHN<N>& bvh, const Tricks& tricks, std::span<const Ray> rays,
+                       std::span<uint8_t> occluded, TraversalStats* stats) {
+    static constexpr auto table = occluded_table(std::make_index_sequence<kTrickConfigCount>{});
+    table[index(bvh, tricks, stats != nullptr, rays.size(), occluded.size())](bvh, rays, occluded, stats);
+  }
+};
+
+}  // namespace rtk::RTK_ISA
