@@ -1,0 +1,187 @@
+/// \file
+/// Binning: the surface area heuristic evaluated at the borders of a fixed number of bins per
+/// axis instead of at every primitive (Wald, "On fast construction of SAH-based bounding volume
+/// hierarchies", IEEE Symposium on Interactive Ray Tracing 2007). A pass over the primitives
+/// drops each centroid into one bin per axis; a sweep over the bins then prices every border.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "01_base/box3.h"
+#include "01_base/platform.h"
+#include "02_bvh2/build_tree.h"
+#include "04_sah/sah_options.h"
+
+namespace rtk::sah {
+
+/// The centroid of a primitive's box, as 0.5 lower + 0.5 upper: the sum lower + upper would
+/// overflow to infinity for coordinates near the largest float.
+RTK_INLINE Vec3f centroid(const PrimRef& ref) { return ref.lower * 0.5f + ref.upper * 0.5f; }
+
+/// Half the surface area of a box in double precision (zero for an empty box): in float the
+/// area overflows once coordinates pass about 1e19.
+inline double half_area(const Box3f& box) {
+  if (box.empty()) return 0.0;
+  const double dx = double(box.upper.x) - box.lower.x, dy = double(box.upper.y) - box.lower.y,
+               dz = double(box.upper.z) - box.lower.z;
+  return dx * dy + dy * dz + dz * dx;
+}
+
+/// How many bins a set of `prims` primitives gets: the requested number, but no more than the
+/// set has primitives. Small sets then cost little to bin, and lose nothing: with one bin per
+/// primitive nearly every border between two centroids is a candidate.
+inline int bins_for(uint32_t prims, int requested) {
+  return int(std::clamp<uint32_t>(prims, 2u, uint32_t(requested)));
+}
+
+/// Four floats in one SSE register. The builder is compiled once, for the baseline instruction
+/// set, and this GCC/Clang vector type gives it 4-wide minimum and maximum there (SSE2 on
+/// x86-64) without ISA flags. Lane 3 is unused.
+typedef float Lanes4 __attribute__((vector_size(16)));
+
+/// Minimum and maximum with the SSE rule (`a < b ? a : b`), lane by lane.
+RTK_INLINE Lanes4 min4(Lanes4 a, Lanes4 b) { return a < b ? a : b; }
+RTK_INLINE Lanes4 max4(Lanes4 a, Lanes4 b) { return a > b ? a : b; }
+
+/// Four 32-bit integers, the bin indices of one centroid on the three axes.
+typedef int32_t Ints4 __attribute__((vector_size(16)));
+
+/// A primitive's box corners as lanes, with zero in lane 3 (the ID's bits there could be a
+/// denormal float, which arithmetic handles slowly).
+RTK_INLINE Lanes4 lanes_lower(const PrimRef& r) {
+  return Lanes4{r.lower.x, r.lower.y, r.lower.z, 0.0f};
+}
+RTK_INLINE Lanes4 lanes_upper(const PrimRef& r) {
+  return Lanes4{r.upper.x, r.upper.y, r.upper.z, 0.0f};
+}
+
+// [ch04-bin-mapping]
+/// Maps a centroid to its bin on each axis: bin = floor((c - origin) * scale), clamped to the
+/// last bin. An axis along which the centroids do not spread (or spread so far or so little
+/// that the scale is not a finite positive float) gets scale 0: binning cannot split there.
+struct BinMapping {
+  Lanes4 origin{0, 0, 0, 0};
+  Lanes4 scale{0, 0, 0, 0};
+  int num_bins = 0;
+
+  BinMapping() = default;
+  BinMapping(const Box3f& centroid_bounds, int bins) : num_bins(bins) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const float extent = centroid_bounds.upper[axis] - centroid_bounds.lower[axis];
+      const float s = float(bins) / extent;
+      const bool usable = extent > 0.0f && extent <= std::numeric_limits<float>::max() &&
+                          s <= std::numeric_limits<float>::max();
+      origin[axis] = centroid_bounds.lower[axis];
+      scale[axis] = usable ? s : 0.0f;
+    }
+  }
+  /// Whether binning can separate anything along `axis`.
+  bool splittable(int axis) const { return scale[axis] > 0.0f; }
+  /// The bins of a centroid on the three axes (lane 3 is 0). Unusable axes give 0 (their
+  /// product may be NaN, which converts to INT_MIN and is clamped).
+  RTK_INLINE Ints4 bins(Lanes4 c) const {
+    const Ints4 i = __builtin_convertvector((c - origin) * scale, Ints4);
+    const Ints4 zero{0, 0, 0, 0}, last = zero + (num_bins - 1);
+    const Ints4 above = i < zero ? zero : i;
+    return above < last ? above : last;
+  }
+  /// The bin of a centroid's coordinate `c` along a splittable `axis`: the same arithmetic as
+  /// bins(), so that partitioning sends every primitive where binning counted it.
+  RTK_INLINE int bin(float c, int axis) const {
+    const int i = int((c - origin[axis]) * scale[axis]);
+    return i < 0 ? 0 : (i < num_bins ? i : num_bins - 1);
+  }
+};
+// [ch04-bin-mapping]
+
+/// One bin: the bounds of the boxes and of the centroids that fell into it, 64 bytes (a cache
+/// line). Plain data without constructors, so that a Bins object costs nothing until reset()
+/// touches the bins in use.
+struct Bin {
+  Lanes4 lower, upper;            ///< bounds of the primitives' boxes
+  Lanes4 cent_lower, cent_upper;  ///< bounds of their centroids
+};
+static_assert(sizeof(Bin) == 64, "one bin per cache line");
+
+// [ch04-bins]
+/// The bins of one set of primitives on all three axes. Each bin keeps its centroids' bounds as
+/// well as its boxes' bounds: once a split is chosen, the children's centroid bounds, which
+/// the children's own bins need, are known without another pass over the primitives.
+struct Bins {
+  int num_bins = 0;
+  Bin bin[3][kMaxSahBins];
+  uint32_t count[3][kMaxSahBins];
+
+  /// Empties the first `n` bins on every axis.
+  void reset(int n) {
+    num_bins = n;
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    const Lanes4 pos{inf, inf, inf, inf}, neg = -pos;
+    for (int axis = 0; axis < 3; ++axis)
+      for (int i = 0; i < n; ++i) {
+        bin[axis][i] = Bin{pos, neg, pos, neg};
+        count[axis][i] = 0;
+      }
+  }
+  /// Drops a primitive into its bin on each axis.
+  RTK_INLINE void add(const PrimRef& ref, const BinMapping& map) {
+    const Lanes4 lo = lanes_lower(ref), hi = lanes_upper(ref);
+    const Lanes4 c = lo * 0.5f + hi * 0.5f;  // centroid(), lane by lane
+    const Ints4 i = map.bins(c);
+    const int i0 = i[0], i1 = i[1], i2 = i[2];
+    extend(bin[0][i0], lo, hi, c, c);
+    extend(bin[1][i1], lo, hi, c, c);
+    extend(bin[2][i2], lo, hi, c, c);
+    ++count[0][i0], ++count[1][i1], ++count[2][i2];
+  }
+  /// Adds another set's bins (same mapping) to these. Minimum, maximum and integer addition do
+  /// not depend on the order they are applied in, so the merged bins are the same whichever
+  /// thread binned which primitives.
+  void merge(const Bins& other) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (int i = 0; i < num_bins; ++i) {
+        const Bin& o = other.bin[axis][i];
+        extend(bin[axis][i], o.lower, o.upper, o.cent_lower, o.cent_upper);
+        count[axis][i] += other.count[axis][i];
+      }
+  }
+
+ private:
+  RTK_INLINE static void extend(Bin& b, Lanes4 lo, Lanes4 hi, Lanes4 clo, Lanes4 chi) {
+    b.lower = min4(lo, b.lower);
+    b.upper = max4(hi, b.upper);
+    b.cent_lower = min4(clo, b.cent_lower);
+    b.cent_upper = max4(chi, b.cent_upper);
+  }
+};
+// [ch04-bins]
+
+/// The box bounds of bins [first, last) on `axis`.
+Box3f bin_bounds(const Bins& bins, int axis, int first, int last);
+/// The centroid bounds of bins [first, last) on `axis`.
+Box3f bin_centroid_bounds(const Bins& bins, int axis, int first, int last);
+/// How many primitives fell into bins [first, last) on `axis`.
+uint32_t bin_count(const Bins& bins, int axis, int first, int last);
+
+/// The best binned split of a set: primitives whose bin on `axis` is below `pos` go left.
+struct Split {
+  int axis = -1;  ///< -1: binning found no border with primitives on both sides
+  int pos = 0;
+  /// The split's intersection term, area(left) * count(left) + area(right) * count(right), in
+  /// half areas (multiply by the intersection cost for the SAH).
+  double cost = std::numeric_limits<double>::infinity();
+  uint32_t left_count = 0;
+  Box3f left_bounds, right_bounds;        ///< the children's boxes
+  Box3f left_centroids, right_centroids;  ///< the children's centroid bounds
+
+  bool valid() const { return axis >= 0; }
+};
+
+/// Prices every bin border on every splittable axis and returns the cheapest, the first one
+/// (lowest axis, then lowest border) among equals, so that the choice is reproducible.
+Split find_best_split(const Bins& bins, const BinMapping& map);
+
+}  // namespace rtk::sah

@@ -1,0 +1,382 @@
+#include "04_sah/build_sah.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "04_sah/binning.h"
+#include "04_sah/occluder_order.h"
+#include "04_sah/prim_set.h"
+#include "04_sah/rotations.h"
+
+namespace rtk {
+
+namespace sah {
+namespace {
+
+/// A piece of the tree made by one job. A small job's fragment is its whole subtree, in local
+/// indices; a medium or large job's is one node whose inner children are other jobs' fragments
+/// (`sub`, indexed by the child's `index` until the fragments are put together).
+template <int N>
+struct Fragment {
+  std::vector<typename BuildTree<N>::Node> nodes;
+  std::array<std::unique_ptr<Fragment>, N> sub;
+  bool upper = false;       ///< one node whose inner children are in `sub`
+  size_t total = 0;         ///< nodes here and in all sub-fragments
+  OccluderSummary summary;  ///< of the fragment's root, for ordering its parent's children
+};
+
+/// Counts every job adds to; the sums do not depend on the schedule.
+struct Counters {
+  std::atomic<size_t> inner{0}, leaves{0}, large{0}, medium{0}, small{0}, fallback{0}, rotations{0};
+};
+
+template <int N>
+class Builder {
+ public:
+  using Tree = BuildTree<N>;
+  using Node = typename Tree::Node;
+  using Child = typename Tree::Child;
+
+  /// The node depth from which nodes are filled by median splits: what is left below, at most
+  /// log_N(2^32) + 1 levels, then fits in chapter 3's 64-level traversal stacks.
+  static constexpr int kLog2N = std::bit_width(unsigned(N) - 1);
+  static constexpr int kMedianDepth = 64 - (32 + kLog2N - 1) / kLog2N - 1;
+
+  Builder(PrimRef* refs, const SahBuildOptions& options, Counters& counters)
+      : refs_(refs), options_(options), counters_(counters) {}
+
+  /// Builds the subtree of a set that wants to be split, whose node lies at `depth` (the root
+  /// node at 1): a small job below kSmallJobPrims, otherwise one node whose children become
+  /// tasks.
+  std::unique_ptr<Fragment<N>> build_job(const PrimSet& set, int depth) {
+    return set.size() < kSmallJobPrims ? build_small(set, depth) : build_upper(set, depth);
+  }
+
+ private:
+  // [ch04-fill-node]
+  /// Fills one node: split the set, then keep splitting the child whose split gains most
+  /// until the node has N children or no split gains anything. A free slot costs no traversal
+  /// step, so inside the node a split is worth making whenever it lowers the intersection
+  /// term, even where the binary leaf test would have kept a leaf. Children stay in the order
+  /// of their ranges, which is the spatial order along the split axes.
+  ///
+  /// Past kMedianDepth levels the SAH has produced a degenerate chain (centroids spaced
+  /// exponentially can make every split peel off a few primitives), and the node is filled
+  /// with splits in the middle of the largest child's range instead: the levels left are then
+  /// at most log_N of the primitive count, and traversal stacks stay within their bounds.
+  int fill_node(const PrimSet& set, std::array<PrimSet, N>& kids, int depth) {
+    const bool median = depth >= kMedianDepth;
+    kids[0] = set;
+    int k = 1;
+    while (k < N) {
+      int best = -1;
+      for (int i = 0; i < k; ++i) {
+        // (The set itself wants a split, so the first one is always made.)
+        const bool candidate =
+            median ? kids[i].size() > uint32_t(options_.max_leaf_size) || k == 1
+                   : kids[i].wants_split || (kids[i].split.valid() && kids[i].gain > 0.0);
+        const bool better = best < 0 || (median ? kids[i].size() > kids[best].size()
+                                                : kids[i].gain > kids[best].gain);
+        if (candidate && better) best = i;
+      }
+      if (best < 0) break;
+      bool fallback = false;
+      PrimSet chosen = kids[best];
+      if (median) chosen.split = Split{};  // split_set() then cuts the range in the middle
+      auto [left, right] = split_set(chosen, refs_, options_, fallback);
+      counters_.fallback += fallback ? 1 : 0;
+      for (int i = k; i > best + 1; --i) kids[i] = kids[i - 1];
+      kids[best] = left;
+      kids[best + 1] = right;
+      ++k;
+    }
+    if (median)
+      for (int i = 0; i < k; ++i)
+        kids[i].wants_split = kids[i].size() > uint32_t(options_.max_leaf_size);
+    return k;
+  }
+  // [ch04-fill-node]
+
+  Child leaf(const PrimSet& s) {
+    ++counters_.leaves;
+    Child c;
+    c.box = s.bounds;
+    c.index = s.begin;
+    c.leaf_count = s.size();
+    return c;
+  }
+
+  // [ch04-small-job]
+  /// A small job: one thread builds the whole subtree, depth first with an explicit stack (a
+  /// badly balanced subtree can be deep), then rotates and orders it.
+  std::unique_ptr<Fragment<N>> build_small(const PrimSet& root, int depth) {
+    auto fragment = std::make_unique<Fragment<N>>();
+    auto& nodes = fragment->nodes;
+    struct Work {
+      PrimSet set;
+      int64_t referrer;  // parent index * N + slot, or -1 for the root
+      int depth;
+    };
+    std::vector<Work> stack{{root, -1, depth}};
+    std::array<PrimSet, N> kids;
+    while (!stack.empty()) {
+      const Work work = stack.back();
+      stack.pop_back();
+      const uint32_t index = uint32_t(nodes.size());
+      if (work.referrer >= 0)
+        nodes[size_t(work.referrer / N)].children[size_t(work.referrer % N)].index = index;
+      const int k = fill_node(work.set, kids, work.depth);
+      Node& node = nodes.emplace_back();
+      node.num_children = k;
+      for (int i = k - 1; i >= 0; --i) {  // pushed last to first, so built first to last
+        if (kids[i].wants_split) {
+          node.children[i].box = kids[i].bounds;
+          stack.push_back({kids[i], int64_t(index) * N + i, work.depth + 1});
+        } else {
+          node.children[i] = leaf(kids[i]);
+        }
+      }
+    }
+    // Tree rotations
+    if (options_.rotations) {
+      const size_t applied = rotate_tree<N>(nodes, kRotationRounds);
+      counters_.rotations += applied;
+      if (applied) nodes = preorder<N>(nodes);
+    }
+    // Occluder ordering
+    if (options_.occluder_order != OccluderOrder::off)
+      fragment->summary = order_subtree<N>(nodes, root.bounds, refs_, options_);
+    fragment->total = nodes.size();
+    counters_.inner += nodes.size();
+    ++counters_.small;
+    return fragment;
+  }
+  // [ch04-small-job]
+
+  // [ch04-upper-job]
+  /// A medium or large job: fill one node (with parallel passes if the set is large), then
+  /// build every inner child as a task of its own and wait for them.
+  std::unique_ptr<Fragment<N>> build_upper(const PrimSet& set, int depth) {
+    auto fragment = std::make_unique<Fragment<N>>();
+    fragment->upper = true;
+    std::array<PrimSet, N> kids;
+    const int k = fill_node(set, kids, depth);
+    ++(set.size() >= kLargeJobPrims ? counters_.large : counters_.medium);
+    Node& node = fragment->nodes.emplace_back();
+    node.num_children = k;
+    tbb::task_group tasks;
+    for (int i = 0; i < k; ++i) {
+      if (!kids[i].wants_split) {
+        node.children[i] = leaf(kids[i]);
+        continue;
+      }
+      node.children[i].box = kids[i].bounds;
+      node.children[i].index = uint32_t(i);  // which sub-fragment, until assembly
+      tasks.run(
+          [this, &fragment, &kids, i, depth] { fragment->sub[i] = build_job(kids[i], depth + 1); });
+    }
+    tasks.wait();
+    fragment->total = 1;
+    for (const auto& sub : fragment->sub) fragment->total += sub ? sub->total : 0;
+    ++counters_.inner;
+    // Occluder ordering: the children's summaries are known once their tasks are done.
+    if (options_.occluder_order != OccluderOrder::off) {
+      std::array<OccluderSummary, N> summaries;
+      for (int i = 0; i < k; ++i) {
+        const Child& c = node.children[i];
+        summaries[i] = c.is_leaf() ? leaf_summary(refs_ + c.index, c.leaf_count, options_)
+                                   : fragment->sub[c.index]->summary;
+      }
+      fragment->summary = order_children<N>(node, summaries, set.bounds, options_);
+    }
+    return fragment;
+  }
+  // [ch04-upper-job]
+
+  PrimRef* refs_;
+  const SahBuildOptions& options_;
+  Counters& counters_;
+};
+
+// [ch04-assemble]
+/// Copies a fragment and its sub-fragments into `out` from `offset` on, in depth-first
+/// preorder of the fragments, turning local indices into global ones. Where each fragment goes
+/// follows from the fragments' sizes alone, so the node order is the same for any schedule.
+template <int N>
+void place(const Fragment<N>& fragment, uint32_t offset, typename BuildTree<N>::Node* out) {
+  if (!fragment.upper) {
+    for (size_t j = 0; j < fragment.nodes.size(); ++j) {
+      auto node = fragment.nodes[j];
+      for (int i = 0; i < node.num_children; ++i)
+        if (!node.children[i].is_leaf()) node.children[i].index += offset;
+      out[offset + j] = node;
+    }
+    return;
+  }
+  auto node = fragment.nodes[0];
+  std::array<const Fragment<N>*, N> subs{};
+  std::array<uint32_t, N> at{};
+  uint32_t next = offset + 1;
+  for (int i = 0; i < node.num_children; ++i) {
+    auto& child = node.children[i];
+    if (child.is_leaf()) continue;
+    subs[i] = fragment.sub[child.index].get();
+    at[i] = next;
+    child.index = next;
+    next += uint32_t(subs[i]->total);
+  }
+  out[offset] = node;
+  tbb::task_group tasks;
+  for (int i = 0; i < node.num_children; ++i)
+    if (subs[i]) tasks.run([&subs, &at, out, i] { place<N>(*subs[i], at[i], out); });
+  tasks.wait();
+}
+// [ch04-assemble]
+
+void check_options(const SahBuildOptions& o) {
+  auto fail = [](const std::string& what) {
+    throw std::invalid_argument("build_binned_sah: " + what);
+  };
+  if (o.bins < 2 || o.bins > kMaxSahBins)
+    fail("bins must be in [2, " + std::to_string(kMaxSahBins) + "], got " + std::to_string(o.bins));
+  if (o.max_leaf_size < 1)
+    fail("max_leaf_size must be at least 1, got " + std::to_string(o.max_leaf_size));
+  if (!std::isfinite(o.traversal_cost) || o.traversal_cost < 0.0f)
+    fail("traversal_cost must be finite and not negative");
+  if (!std::isfinite(o.intersection_cost) || o.intersection_cost <= 0.0f)
+    fail("intersection_cost must be finite and positive");
+  if (o.threads < 0)
+    fail("threads must be 0 (the caller's arena) or positive, got " + std::to_string(o.threads));
+}
+
+/// The builder's own copy of the references: valid ones only, in input order, with -0 turned
+/// into +0 (x + 0 does that) so that minimum and maximum never have to choose between two
+/// zeros, which would make the bounds depend on the order of a parallel reduction.
+struct Prepared {
+  struct Release {
+    void operator()(PrimRef* p) const { ::operator delete(p, std::align_val_t(64)); }
+  };
+  std::unique_ptr<PrimRef[], Release> refs;
+  uint32_t count = 0;
+  Box3f bounds, centroids;
+};
+
+Prepared prepare(std::span<const PrimRef> input) {
+  const size_t n = input.size();
+  const size_t blocks = (n + kPartitionBlockPrims - 1) / kPartitionBlockPrims;
+  std::vector<uint32_t> valid(blocks);
+  std::vector<Box3f> bounds(blocks), centroids(blocks);
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    const size_t first = b * kPartitionBlockPrims, last = std::min(n, first + kPartitionBlockPrims);
+    for (size_t i = first; i < last; ++i) valid[b] += is_buildable(input[i]) ? 1 : 0;
+  });
+  Prepared p;
+  size_t total = 0;
+  std::vector<size_t> offset(blocks);
+  for (size_t b = 0; b < blocks; ++b) offset[b] = total, total += valid[b];
+  p.count = uint32_t(total);
+  // Raw storage, not a vector: every element is written below, so zeroing it first would be
+  // a wasted pass over the largest array of the build.
+  p.refs.reset(static_cast<PrimRef*>(
+      ::operator new(std::max<size_t>(total, 1) * sizeof(PrimRef), std::align_val_t(64))));
+  PrimRef* out = p.refs.get();
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    const size_t first = b * kPartitionBlockPrims, last = std::min(n, first + kPartitionBlockPrims);
+    size_t o = offset[b];
+    for (size_t i = first; i < last; ++i) {
+      if (!is_buildable(input[i])) continue;
+      PrimRef r = input[i];
+      r.lower = r.lower + Vec3f(0.0f);
+      r.upper = r.upper + Vec3f(0.0f);
+      out[o++] = r;
+      bounds[b].extend(r.box());
+      centroids[b].extend(centroid(r));
+    }
+  });
+  for (size_t b = 0; b < blocks; ++b) p.bounds.extend(bounds[b]), p.centroids.extend(centroids[b]);
+  return p;
+}
+
+template <int N>
+BuildTree<N> build(std::span<const PrimRef> input, const SahBuildOptions& options,
+                   SahBuildStats* stats) {
+  BuildTree<N> tree;
+  Counters counters;
+  Prepared p = prepare(input);
+  if (p.count > 0) {
+    const PrimSet root = make_root_set(p.refs.get(), p.count, p.bounds, p.centroids, options);
+    if (!root.wants_split) {
+      tree.root.box = root.bounds;
+      tree.root.index = 0;
+      tree.root.leaf_count = root.size();
+      counters.leaves = 1;
+    } else {
+      Builder<N> builder(p.refs.get(), options, counters);
+      const auto fragment = builder.build_job(root, 1);
+      tree.nodes.resize(fragment->total);
+      place<N>(*fragment, 0, tree.nodes.data());
+      tree.root.box = root.bounds;
+      tree.root.index = 0;
+      tree.root.leaf_count = 0;
+    }
+    tree.prim_ids.resize(p.count);
+    const PrimRef* refs = p.refs.get();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, p.count, kPartitionBlockPrims),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i)
+                          tree.prim_ids[i] = refs[i].prim;
+                      });
+  }
+  if (stats) {
+    *stats = SahBuildStats{};
+    stats->primitives = p.count;
+    stats->skipped = input.size() - p.count;
+    stats->inner_nodes = counters.inner;
+    stats->leaves = counters.leaves;
+    stats->large_jobs = counters.large;
+    stats->medium_jobs = counters.medium;
+    stats->small_jobs = counters.small;
+    stats->fallback_splits = counters.fallback;
+    stats->rotations = counters.rotations;
+  }
+  return tree;
+}
+
+}  // namespace
+}  // namespace sah
+
+template <int N>
+BuildTree<N> build_binned_sah(std::span<const PrimRef> refs, const SahBuildOptions& options,
+                              SahBuildStats* stats) {
+  static_assert(N == 2 || N == 4 || N == 8 || N == 16, "nodes of 2, 4, 8 or 16 children");
+  sah::check_options(options);
+  if (refs.size() > size_t(std::numeric_limits<uint32_t>::max()) - 1)
+    throw std::length_error("build_binned_sah: more than 2^32 - 2 primitive references");
+  if (options.threads == 0) return sah::build<N>(refs, options, stats);
+  tbb::task_arena arena(options.threads);
+  return arena.execute([&] { return sah::build<N>(refs, options, stats); });
+}
+
+template BuildTree<2> build_binned_sah<2>(std::span<const PrimRef>, const SahBuildOptions&,
+                                          SahBuildStats*);
+template BuildTree<4> build_binned_sah<4>(std::span<const PrimRef>, const SahBuildOptions&,
+                                          SahBuildStats*);
+template BuildTree<8> build_binned_sah<8>(std::span<const PrimRef>, const SahBuildOptions&,
+                                          SahBuildStats*);
+template BuildTree<16> build_binned_sah<16>(std::span<const PrimRef>, const SahBuildOptions&,
+                                            SahBuildStats*);
+
+}  // namespace rtk

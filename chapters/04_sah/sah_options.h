@@ -1,0 +1,86 @@
+/// \file
+/// What the binned SAH builder can be asked to do, what it reports, and the fixed constants that
+/// decide how it divides its work between threads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace rtk {
+
+/// The most bins per axis the builder supports; the Embree 1.1 guide uses up to 32.
+inline constexpr int kMaxSahBins = 64;
+
+// [ch04-granularity]
+/// Sets of at least this many primitives are "large jobs": binning and partitioning them are
+/// themselves parallel loops over blocks of primitives. At the top of the tree there is one set
+/// and nothing else to do, so its passes must be shared; lower down, sibling subtrees are tasks
+/// that keep the threads busy, and a parallel loop would only add its overhead (bins per thread
+/// to merge, a second pass to swap misplaced primitives). 2^15 primitives make 8 blocks.
+inline constexpr uint32_t kLargeJobPrims = 1u << 15;
+
+/// Sets of fewer primitives are "small jobs": one thread builds their whole subtree without
+/// creating tasks, then improves it with rotations. Such a subtree takes a millisecond or two;
+/// cutting it into tasks would cost scheduling and fragments and gain nothing once every thread
+/// has small jobs of its own (the guide credits this strategy with 10 % on large scenes).
+/// Between the two thresholds lie "medium jobs": one thread fills the node, and each child
+/// becomes a task of its own.
+inline constexpr uint32_t kSmallJobPrims = 1u << 12;
+
+/// The parallel partition of a large job cuts its range into blocks of this many primitives.
+/// The blocks, not the threads, fix where every primitive ends up, so the tree does not depend
+/// on how many threads took part.
+inline constexpr uint32_t kPartitionBlockPrims = 1u << 12;
+// [ch04-granularity]
+
+/// How many bottom-up rounds of tree rotations a small job makes; a round that finds nothing to
+/// improve ends them early.
+inline constexpr int kRotationRounds = 3;
+
+/// How the children of each node are ordered for occlusion rays, which stop at the first hit
+/// and so gain from visiting likely blockers first (closest-hit traversal orders children by
+/// distance and does not care).
+enum class OccluderOrder {
+  off,            ///< children stay in spatial order, left to right along the split axes
+  largest_box,    ///< larger boxes first: they are entered by more rays
+  likely_blocker  ///< highest odds of blocking per unit of expected work first (the chapter)
+};
+
+/// The knobs of build_binned_sah(). The defaults are those the chapter's measurements chose.
+struct SahBuildOptions {
+  /// Candidate split planes per axis are the borders of this many bins over the centroids'
+  /// bounds, 2 to kMaxSahBins. Sets of fewer primitives use as many bins as primitives.
+  int bins = 32;
+  /// No leaf holds more primitives than this (at least 1). Smaller sets become leaves when
+  /// the SAH says a leaf is cheaper than a split.
+  int max_leaf_size = 8;
+  /// The SAH cost of visiting a node (testing its children's boxes), relative to...
+  float traversal_cost = 1.0f;
+  /// ...the cost of intersecting one primitive. Both must be finite; this one positive. Half a
+  /// node step: of the prices the chapter measured (1, 0.5, 0.25), trees built with this one
+  /// traced fastest through chapter 3's BVH4 kernels.
+  float intersection_cost = 0.5f;
+  /// Improve small subtrees with Kensler's tree rotations (2008).
+  bool rotations = true;
+  /// How each node's children are ordered for occlusion rays.
+  OccluderOrder occluder_order = OccluderOrder::likely_blocker;
+  /// 0: run in the caller's TBB task arena (all cores unless the caller limited them);
+  /// n > 0: run in a private arena of n threads. The tree is the same either way.
+  int threads = 0;
+};
+
+/// What a build did. Every count is a property of the input and the options alone, never of
+/// the thread schedule, so that two builds of one scene report the same figures.
+struct SahBuildStats {
+  size_t primitives = 0;       ///< primitives in the tree
+  size_t skipped = 0;          ///< input references with NaN, infinite or inverted boxes, left out
+  size_t inner_nodes = 0;      ///< nodes of the tree
+  size_t leaves = 0;           ///< leaf children (including a leaf root)
+  size_t large_jobs = 0;       ///< nodes whose splits ran as parallel loops
+  size_t medium_jobs = 0;      ///< nodes filled by one thread whose children became tasks
+  size_t small_jobs = 0;       ///< subtrees built by one thread from start to end
+  size_t fallback_splits = 0;  ///< splits in the middle of the range: no bin could separate
+  size_t rotations = 0;        ///< tree rotations applied
+};
+
+}  // namespace rtk

@@ -1,0 +1,191 @@
+// Chapter 4: binning, the sweep, and the one-pass partition (serial and parallel).
+#include <doctest/doctest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "04_sah/binning.h"
+#include "04_sah/partition.h"
+#include "scenes.h"
+
+namespace {
+
+using namespace rtk;
+using namespace rtk::sah;
+
+PrimRef box_ref(Vec3f lower, Vec3f upper, uint32_t id) { return PrimRef(Box3f(lower, upper), id); }
+
+bool same_bins(const Bins& a, const Bins& b) {
+  if (a.num_bins != b.num_bins) return false;
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::memcmp(a.bin[axis], b.bin[axis], sizeof(Bin) * size_t(a.num_bins)) != 0) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("ch04: the bin mapping covers the centroid bounds and refuses degenerate axes") {
+  const Box3f cent({-1, 2, 5}, {3, 2, 5.5f});
+  const BinMapping map(cent, 32);
+  CHECK(map.splittable(0));
+  CHECK_FALSE(map.splittable(1));  // no extent
+  CHECK(map.splittable(2));
+  CHECK(map.bin(cent.lower.x, 0) == 0);
+  CHECK(map.bin(cent.upper.x, 0) == 31);
+  CHECK(map.bin(1.0f, 0) == 16);
+  CHECK(map.bin(2.0f, 1) == 0);
+  // Extents that overflow, or a scale that does, cannot be binned.
+  const BinMapping huge(Box3f({-3e38f, 0, 0}, {3e38f, 1e-45f, 1}), 32);
+  CHECK_FALSE(huge.splittable(0));
+  CHECK_FALSE(huge.splittable(1));
+  CHECK(huge.splittable(2));
+}
+
+TEST_CASE("ch04: the vector and the scalar bin computations agree") {
+  // Binning uses bins() (all axes at once), partitioning bin() (one axis): a primitive must
+  // land on the same side in both, or the children's boxes would not bound their primitives.
+  const std::vector<PrimRef> refs = make_prim_refs(test::make_random_soup(2000, 3));
+  Box3f cent;
+  for (const auto& r : refs) cent.extend(centroid(r));
+  for (const int n : {2, 7, 32, kMaxSahBins}) {
+    const BinMapping map(cent, n);
+    bool same = true;
+    for (const auto& r : refs) {
+      const Vec3f c = centroid(r);
+      const Ints4 v = map.bins(Lanes4{c.x, c.y, c.z, 0.0f});
+      for (int axis = 0; axis < 3; ++axis) same &= v[axis] == map.bin(c[axis], axis);
+      same &= v[0] >= 0 && v[0] < n;
+    }
+    CHECK(same);
+  }
+}
+
+TEST_CASE("ch04: the sweep finds the gap between two clusters, priced analytically") {
+  // Ten unit cubes at x in [0, 1] and ten at x in [10, 11]: the best split separates them, and
+  // costs area * count on each side: 3 * 10 (a unit cube has half area 3) twice.
+  std::vector<PrimRef> refs;
+  for (uint32_t i = 0; i < 10; ++i) refs.push_back(box_ref({0, 0, 0}, {1, 1, 1}, i));
+  for (uint32_t i = 10; i < 20; ++i) refs.push_back(box_ref({10, 0, 0}, {11, 1, 1}, i));
+  Box3f cent;
+  for (const auto& r : refs) cent.extend(centroid(r));
+  const BinMapping map(cent, 32);
+  auto bins = std::make_unique<Bins>();
+  bins->reset(32);
+  bin_prims(refs.data(), uint32_t(refs.size()), map, *bins);
+  const Split s = find_best_split(*bins, map);
+  REQUIRE(s.valid());
+  CHECK(s.axis == 0);
+  CHECK(s.left_count == 10);
+  CHECK(s.cost == doctest::Approx(60.0));
+  CHECK(s.left_bounds == Box3f({0, 0, 0}, {1, 1, 1}));
+  CHECK(s.right_bounds == Box3f({10, 0, 0}, {11, 1, 1}));
+  CHECK(s.left_centroids == Box3f({0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}));
+}
+
+TEST_CASE("ch04: the sweep finds no split when all centroids coincide") {
+  std::vector<PrimRef> refs;
+  for (uint32_t i = 0; i < 8; ++i) refs.push_back(box_ref(Vec3f(-float(i)), Vec3f(float(i)), i));
+  Box3f cent;
+  for (const auto& r : refs) cent.extend(centroid(r));
+  const BinMapping map(cent, 8);
+  auto bins = std::make_unique<Bins>();
+  bins->reset(8);
+  bin_prims(refs.data(), 8, map, *bins);
+  CHECK_FALSE(find_best_split(*bins, map).valid());
+}
+
+TEST_CASE("ch04: one-pass partition sends each primitive to its side and bins it there") {
+  const TriangleMesh mesh = test::make_random_soup(3000, 7);
+  std::vector<PrimRef> refs = make_prim_refs(mesh);
+  Box3f cent;
+  for (const auto& r : refs) cent.extend(centroid(r));
+  const BinMapping map(cent, 32);
+  auto bins = std::make_unique<Bins>();
+  bins->reset(32);
+  bin_prims(refs.data(), uint32_t(refs.size()), map, *bins);
+  const Split s = find_best_split(*bins, map);
+  REQUIRE(s.valid());
+
+  const BinMapping left_map(s.left_centroids, 32), right_map(s.right_centroids, 32);
+  auto left = std::make_unique<Bins>(), right = std::make_unique<Bins>();
+  left->reset(32);
+  right->reset(32);
+  const SplitPlane plane{&map, s.axis, s.pos};
+  const uint32_t mid = partition_and_bin(refs.data(), uint32_t(refs.size()), plane,
+                                         {&left_map, left.get(), &right_map, right.get()});
+  CHECK(mid == s.left_count);
+  for (uint32_t i = 0; i < refs.size(); ++i) CHECK(plane.goes_left(refs[i]) == (i < mid));
+  // The bins filled in passing equal bins filled by separate passes over each side.
+  auto left2 = std::make_unique<Bins>(), right2 = std::make_unique<Bins>();
+  left2->reset(32);
+  right2->reset(32);
+  bin_prims(refs.data(), mid, left_map, *left2);
+  bin_prims(refs.data() + mid, uint32_t(refs.size()) - mid, right_map, *right2);
+  CHECK(same_bins(*left, *left2));
+  CHECK(same_bins(*right, *right2));
+  CHECK(bin_bounds(*left, 0, 0, 32) == s.left_bounds);
+  CHECK(bin_centroid_bounds(*right, 1, 0, 32) == s.right_centroids);
+}
+
+TEST_CASE(
+    "ch04: the parallel partition gives the serial bins and the same layout for any thread count") {
+  // Enough primitives for several blocks, with a block border falling mid-way.
+  const uint32_t n = 5 * kPartitionBlockPrims + 123;
+  const TriangleMesh mesh = test::make_random_soup(int(n), 11);
+  const std::vector<PrimRef> input = make_prim_refs(mesh);
+  Box3f cent;
+  for (const auto& r : input) cent.extend(centroid(r));
+  const BinMapping map(cent, 32);
+  const SplitPlane plane{&map, 1, 13};
+  Box3f lc, rc;
+  for (const auto& r : input) (plane.goes_left(r) ? lc : rc).extend(centroid(r));
+  const BinMapping left_map(lc, 32), right_map(rc, 32);
+
+  auto run = [&](int threads, std::vector<PrimRef>& refs, Bins& left, Bins& right) {
+    refs = input;
+    tbb::task_arena arena(threads);
+    return arena.execute([&] {
+      return parallel_partition_and_bin(refs.data(), n, plane,
+                                        {&left_map, &left, &right_map, &right});
+    });
+  };
+  // Allow four threads on a machine with fewer cores (TBB caps arenas at the core count).
+  tbb::global_control allow_four(tbb::global_control::max_allowed_parallelism, 4);
+  std::vector<PrimRef> one, two, four;
+  auto l1 = std::make_unique<Bins>(), r1 = std::make_unique<Bins>();
+  auto l2 = std::make_unique<Bins>(), r2 = std::make_unique<Bins>();
+  auto l4 = std::make_unique<Bins>(), r4 = std::make_unique<Bins>();
+  const uint32_t mid1 = run(1, one, *l1, *r1);
+  const uint32_t mid2 = run(2, two, *l2, *r2);
+  const uint32_t mid4 = run(4, four, *l4, *r4);
+  CHECK(mid1 == mid2);
+  CHECK(mid1 == mid4);
+  CHECK(std::memcmp(one.data(), two.data(), n * sizeof(PrimRef)) == 0);
+  CHECK(std::memcmp(one.data(), four.data(), n * sizeof(PrimRef)) == 0);
+  CHECK(same_bins(*l1, *l2));
+  CHECK(same_bins(*r1, *r4));
+
+  // Against the serial partition: the same sides, bins and multiset of references.
+  std::vector<PrimRef> serial = input;
+  auto ls = std::make_unique<Bins>(), rs = std::make_unique<Bins>();
+  ls->reset(32);
+  rs->reset(32);
+  const uint32_t mids =
+      partition_and_bin(serial.data(), n, plane, {&left_map, ls.get(), &right_map, rs.get()});
+  CHECK(mids == mid1);
+  CHECK(same_bins(*ls, *l1));
+  CHECK(same_bins(*rs, *r1));
+  bool sides_ok = true;
+  std::vector<int> count(n, 0);
+  for (uint32_t i = 0; i < n; ++i) {
+    sides_ok &= plane.goes_left(one[i]) == (i < mid1);
+    ++count[one[i].prim];
+  }
+  CHECK(sides_ok);
+  CHECK(std::count(count.begin(), count.end(), 1) == std::ptrdiff_t(n));
+}

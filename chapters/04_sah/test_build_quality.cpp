@@ -1,0 +1,149 @@
+// Chapter 4: what the heuristics buy. N-ary filling fills nodes, rotations never make the SAH
+// worse, occluder ordering only reorders, and rays can still reach what they hit.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+#include "04_sah/build_sah.h"
+#include "04_sah/tree_checks.h"
+#include "brute_force.h"
+#include "rays.h"
+#include "scenes.h"
+
+namespace {
+
+using namespace rtk;
+
+struct NamedScene {
+  std::string name;
+  TriangleMesh mesh;
+};
+
+std::vector<NamedScene> scenes() {
+  std::vector<NamedScene> s;
+  s.push_back({"sphere", test::make_sphere(30, 60)});
+  s.push_back({"soup", test::make_random_soup(4000, 41)});
+  s.push_back({"terrain", test::make_terrain(40, 42)});
+  s.push_back({"slivers", test::make_slivers(2000, 43)});
+  return s;
+}
+
+/// Every child of the tree as (box corners, leaf count), sorted: the tree's content without its
+/// order.
+template <int N>
+std::vector<std::tuple<float, float, float, float, float, float, uint32_t>> children_multiset(
+    const BuildTree<N>& t) {
+  std::vector<std::tuple<float, float, float, float, float, float, uint32_t>> all;
+  for (const auto& node : t.nodes)
+    for (int i = 0; i < node.num_children; ++i) {
+      const auto& c = node.children[i];
+      all.emplace_back(c.box.lower.x, c.box.lower.y, c.box.lower.z, c.box.upper.x, c.box.upper.y,
+                       c.box.upper.z, c.leaf_count);
+    }
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("ch04: a node has fewer than N children only when no child wanted a split", W,
+                   std::integral_constant<int, 4>, std::integral_constant<int, 8>) {
+  constexpr int N = W::value;
+  for (const auto& scene : scenes()) {
+    CAPTURE(scene.name);
+    const std::vector<PrimRef> refs = make_prim_refs(scene.mesh);
+    SahBuildOptions options;
+    options.rotations = false;  // rotations may move an inner child under a partly filled node
+    const BuildTree<N> tree = build_binned_sah<N>(refs, options);
+    size_t full = 0;
+    bool only_leaves = true;
+    for (const auto& node : tree.nodes) {
+      if (node.num_children == N) {
+        ++full;
+        continue;
+      }
+      for (int i = 0; i < node.num_children; ++i) only_leaves &= node.children[i].is_leaf();
+    }
+    CHECK(only_leaves);
+    CHECK(full > 0);
+  }
+}
+
+TEST_CASE_TEMPLATE("ch04: rotations never increase the SAH", W, std::integral_constant<int, 2>,
+                   std::integral_constant<int, 4>, std::integral_constant<int, 8>) {
+  constexpr int N = W::value;
+  size_t total_rotations = 0;
+  for (const auto& scene : scenes()) {
+    CAPTURE(scene.name);
+    const std::vector<PrimRef> refs = make_prim_refs(scene.mesh);
+    SahBuildOptions options;
+    options.rotations = false;
+    const double without = sah_cost(build_binned_sah<N>(refs, options));
+    options.rotations = true;
+    SahBuildStats stats;
+    const BuildTree<N> rotated = build_binned_sah<N>(refs, options, &stats);
+    const double with = sah_cost(rotated);
+    CHECK(with <= without * (1.0 + 1e-12));
+    if (stats.rotations > 0) CHECK(with < without);
+    total_rotations += stats.rotations;
+    CHECK(test::check_tree(rotated, refs, options.max_leaf_size) == "");
+  }
+  CHECK(total_rotations > 0);  // the test exercised rotations
+}
+
+TEST_CASE("ch04: occluder ordering permutes children and nothing else") {
+  for (const auto& scene : scenes()) {
+    CAPTURE(scene.name);
+    const std::vector<PrimRef> refs = make_prim_refs(scene.mesh);
+    SahBuildOptions options;
+    options.occluder_order = OccluderOrder::off;
+    const BuildTree<4> plain = build_binned_sah<4>(refs, options);
+    for (const OccluderOrder order : {OccluderOrder::largest_box, OccluderOrder::likely_blocker}) {
+      options.occluder_order = order;
+      const BuildTree<4> ordered = build_binned_sah<4>(refs, options);
+      CHECK(test::check_tree(ordered, refs, options.max_leaf_size) == "");
+      CHECK(children_multiset(ordered) == children_multiset(plain));
+      CHECK(sah_cost(ordered) == doctest::Approx(sah_cost(plain)).epsilon(1e-12));
+      CHECK(ordered.prim_ids == plain.prim_ids);
+    }
+    // largest_box: every node's children by non-increasing area (checked independently here).
+    options.occluder_order = OccluderOrder::largest_box;
+    const BuildTree<4> by_area = build_binned_sah<4>(refs, options);
+    bool sorted = true;
+    size_t reordered = 0;
+    for (const auto& node : by_area.nodes)
+      for (int i = 1; i < node.num_children; ++i) {
+        sorted &= !(node.children[i].box.half_area() >
+                    node.children[i - 1].box.half_area() * (1 + 1e-6f));
+      }
+    for (size_t n = 0; n < plain.nodes.size() && n < by_area.nodes.size(); ++n)
+      reordered += plain.nodes[n].children[0].box == by_area.nodes[n].children[0].box ? 0 : 1;
+    CHECK(sorted);
+    CHECK(reordered > 0);
+  }
+}
+
+TEST_CASE_TEMPLATE("ch04: every ray reaches the triangle the brute-force oracle hits", W,
+                   std::integral_constant<int, 2>, std::integral_constant<int, 4>,
+                   std::integral_constant<int, 8>, std::integral_constant<int, 16>) {
+  constexpr int N = W::value;
+  for (const auto& scene : scenes()) {
+    CAPTURE(scene.name);
+    const std::vector<PrimRef> refs = make_prim_refs(scene.mesh);
+    const BuildTree<N> tree = build_binned_sah<N>(refs);
+    const std::vector<Ray> rays = test::mixed_rays(scene.mesh.bounds(), 200, 44);
+    int hits = 0, unreached = 0;
+    for (const Ray& ray : rays) {
+      const Hit hit = test::brute_force_intersect(scene.mesh, ray);
+      if (!hit.found()) continue;
+      ++hits;
+      unreached += test::reaches(tree, ray, hit.prim) ? 0 : 1;
+    }
+    CHECK(hits > 20);
+    CHECK(unreached == 0);
+  }
+}

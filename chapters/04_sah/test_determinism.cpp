@@ -1,0 +1,93 @@
+// Chapter 4: the same input gives the same tree, bit for bit and node for node, whatever the
+// number of threads. Run under ThreadSanitizer as well (see chapter.md).
+#include <doctest/doctest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+#include "04_sah/build_sah.h"
+#include "04_sah/tree_checks.h"
+#include "scenes.h"
+
+namespace {
+
+using namespace rtk;
+
+bool same_stats(const SahBuildStats& a, const SahBuildStats& b) {
+  return a.primitives == b.primitives && a.skipped == b.skipped && a.inner_nodes == b.inner_nodes &&
+         a.leaves == b.leaves && a.large_jobs == b.large_jobs && a.medium_jobs == b.medium_jobs &&
+         a.small_jobs == b.small_jobs && a.fallback_splits == b.fallback_splits &&
+         a.rotations == b.rotations;
+}
+
+}  // namespace
+
+// [ch04-test-determinism]
+TEST_CASE_TEMPLATE("ch04: one, two and four threads build the same tree", W,
+                   std::integral_constant<int, 2>, std::integral_constant<int, 4>,
+                   std::integral_constant<int, 8>) {
+  constexpr int N = W::value;
+  // Large enough for large jobs (parallel partitions), medium jobs (tasks) and small ones.
+  TriangleMesh soup = test::make_random_soup(int(2 * kLargeJobPrims + 3000), 31);
+  test::add_degenerate_triangles(soup, 500, 32);
+  const std::vector<PrimRef> refs = make_prim_refs(soup);
+  SahBuildOptions options;
+  options.threads = 1;
+  SahBuildStats stats1, stats2, stats4;
+  const BuildTree<N> one = build_binned_sah<N>(refs, options, &stats1);
+  options.threads = 2;
+  const BuildTree<N> two = build_binned_sah<N>(refs, options, &stats2);
+  // More threads than this machine has cores: a different schedule again. TBB caps an arena at
+  // the core count unless told otherwise.
+  tbb::global_control allow_four(tbb::global_control::max_allowed_parallelism, 4);
+  options.threads = 4;
+  const BuildTree<N> four = build_binned_sah<N>(refs, options, &stats4);
+  REQUIRE(stats1.large_jobs > 0);
+  CHECK(test::identical(one, two));
+  CHECK(test::identical(one, four));
+  CHECK(same_stats(stats1, stats2));
+  CHECK(same_stats(stats1, stats4));
+  CHECK(test::check_tree(one, refs, options.max_leaf_size) == "");
+}
+// [ch04-test-determinism]
+
+TEST_CASE("ch04: determinism holds with every option, and in the caller's arena") {
+  const std::vector<PrimRef> refs =
+      make_prim_refs(test::make_terrain(140, 33));  // 39,200 triangles
+  for (const bool rotations : {false, true})
+    for (const OccluderOrder order :
+         {OccluderOrder::off, OccluderOrder::largest_box, OccluderOrder::likely_blocker}) {
+      CAPTURE(rotations);
+      CAPTURE(int(order));
+      SahBuildOptions options;
+      options.rotations = rotations;
+      options.occluder_order = order;
+      options.threads = 1;
+      const BuildTree<4> one = build_binned_sah<4>(refs, options);
+      options.threads = 2;
+      const BuildTree<4> two = build_binned_sah<4>(refs, options);
+      options.threads = 0;
+      const BuildTree<4> caller = build_binned_sah<4>(refs, options);
+      CHECK(test::identical(one, two));
+      CHECK(test::identical(one, caller));
+    }
+}
+
+TEST_CASE("ch04: negative zeros do not make the bounds depend on the schedule") {
+  // Half of the boxes touch the planes through 0 with -0 and half with +0; minimum and maximum
+  // alone would pick one or the other depending on which thread merged what.
+  TriangleMesh mesh = test::make_random_soup(int(kLargeJobPrims + 7000), 35);
+  for (size_t i = 0; i < mesh.vertices.size(); ++i)
+    if (i % 7 == 0 || mesh.vertices[i].x < 0.0f) mesh.vertices[i].x = (i % 2) ? -0.0f : 0.0f;
+  const std::vector<PrimRef> refs = make_prim_refs(mesh);
+  SahBuildOptions options;
+  options.threads = 1;
+  const BuildTree<4> one = build_binned_sah<4>(refs, options);
+  options.threads = 2;
+  const BuildTree<4> two = build_binned_sah<4>(refs, options);
+  CHECK(test::identical(one, two));
+  CHECK(std::signbit(one.root.box.lower.x) == false);
+}
