@@ -1,0 +1,29 @@
+#include "06_layouts/layout_build.h"
+
+#include "04_sah/build_sah.h"
+
+namespace rtk {
+
+SahBuildOptions sah_options_for(TriangleLayout layout) {
+  const int width = layout == TriangleLayout::triangle8 ? 8
+                    : (layout == TriangleLayout::triangle4 || layout == TriangleLayout::triangle4i ||
+                       layout == TriangleLayout::triangle4v)
+                        ? 4
+                        : 1;
+  SahBuildOptions options;
+  options.intersection_cost = 1.0f / float(width);
+  options.max_leaf_size = width == 1 ? 8 : 2 * width;
+  return options;
+}
+
+template <int N>
+LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleConfig config, int threads) {
+  SahBuildOptions options = sah_options_for(config.layout);
+  options.threads = threads;
+  return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, config);
+}
+
+template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleConfig, int);
+template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleConfig, int);
+
+}  // namespace rtk

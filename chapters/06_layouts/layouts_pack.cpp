@@ -1,0 +1,108 @@
+// Filling the leaf blocks of chapter 6's layouts: the precomputations each layout makes once,
+// at build time, so that the tests make them never.
+#include <stdexcept>
+#include <string>
+
+#include "06_layouts/triangle_i.h"
+#include "06_layouts/triangle_m.h"
+#include "06_layouts/triangle_v.h"
+#include "07_intersectors/zero_area.h"
+
+namespace rtk {
+
+namespace {
+
+/// The three vertices of a triangle as the layouts store them: a zero-area triangle becomes
+/// three copies of its first vertex, which every intersector rejects with exact zeros.
+struct Corners {
+  Vec3f p[3];
+  bool zero_area;
+};
+Corners corners(const TriangleMesh& mesh, uint32_t prim) {
+  Corners c{{mesh.vertex(prim, 0), mesh.vertex(prim, 1), mesh.vertex(prim, 2)}, false};
+  if (is_zero_area(c.p[0], c.p[1], c.p[2])) {
+    c.p[1] = c.p[2] = c.p[0];
+    c.zero_area = true;
+  }
+  return c;
+}
+
+/// The entry of `prims` that lane `lane` of block `block` holds: unused lanes repeat lane 0.
+uint32_t lane_prim(std::span<const uint32_t> prims, size_t block, int width, int lane) {
+  const size_t i = block * size_t(width) + size_t(lane);
+  return i < prims.size() ? prims[i] : prims[block * size_t(width)];
+}
+
+}  // namespace
+
+template <int M>
+void TriangleMLayout<M>::pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Block* out) {
+  for (size_t b = 0; b < block_count(prims.size()); ++b) {
+    Block& block = out[b];
+    for (int lane = 0; lane < M; ++lane) {
+      const uint32_t prim = lane_prim(prims, b, M, lane);
+      const Corners c = corners(mesh, prim);
+      const Vec3f e1 = c.p[1] - c.p[0], e2 = c.p[2] - c.p[0];
+      // The same float operations as the per-ray computation in 07_intersectors/moeller.h,
+      // so precomputed and computed-per-ray tests give the same bits.
+      const Vec3f ng = cross(e1, e2);
+      for (int axis = 0; axis < 3; ++axis) {
+        block.v0[axis][lane] = c.p[0][axis];
+        block.e1[axis][lane] = e1[axis];
+        block.e2[axis][lane] = e2[axis];
+        block.Ng[axis][lane] = ng[axis];
+      }
+      block.prim[lane] = prim;
+    }
+  }
+}
+
+template struct TriangleMLayout<4>;
+template struct TriangleMLayout<8>;
+
+void Triangle1vLayout::pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Block* out) {
+  for (size_t i = 0; i < prims.size(); ++i) {
+    const Corners c = corners(mesh, prims[i]);
+    out[i] = Triangle1v{c.p[0], prims[i], c.p[1], 0, c.p[2], 0};
+  }
+}
+
+void Triangle4vLayout::pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Block* out) {
+  for (size_t b = 0; b < block_count(prims.size()); ++b)
+    for (int lane = 0; lane < 4; ++lane) {
+      const uint32_t prim = lane_prim(prims, b, 4, lane);
+      const Corners c = corners(mesh, prim);
+      for (int k = 0; k < 3; ++k)
+        for (int axis = 0; axis < 3; ++axis) out[b].p[k][axis][lane] = c.p[k][axis];
+      out[b].prim[lane] = prim;
+    }
+}
+
+void Triangle1iLayout::pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Block* out) {
+  for (size_t i = 0; i < prims.size(); ++i) {
+    const auto& tri = mesh.triangles[prims[i]];
+    const bool flat = corners(mesh, prims[i]).zero_area;
+    out[i] = Triangle1i{{tri[0], flat ? tri[0] : tri[1], flat ? tri[0] : tri[2]}, prims[i],
+                        mesh.vertices.data(), 0};
+  }
+}
+
+void Triangle4iLayout::pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Block* out) {
+  if (mesh.vertices.size() > kMaxIndexedVertices)
+    throw std::invalid_argument("triangle4i: a mesh of " + std::to_string(mesh.vertices.size()) +
+                                " vertices is more than the " + std::to_string(kMaxIndexedVertices) +
+                                " an indexed block can address");
+  for (size_t b = 0; b < block_count(prims.size()); ++b) {
+    for (int lane = 0; lane < 4; ++lane) {
+      const uint32_t prim = lane_prim(prims, b, 4, lane);
+      const auto& tri = mesh.triangles[prim];
+      const bool flat = corners(mesh, prim).zero_area;
+      for (int k = 0; k < 3; ++k) out[b].v[k][lane] = int32_t(flat ? tri[0] : tri[size_t(k)]);
+      out[b].prim[lane] = prim;
+    }
+    out[b].vertices = mesh.vertices.data();
+    out[b].unused = 0;
+  }
+}
+
+}  // namespace rtk

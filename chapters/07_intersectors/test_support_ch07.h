@@ -1,0 +1,29 @@
+// Helpers shared by chapter 7's tests: run an intersector over all triangles with a chosen ISA
+// and width, and count what matters.
+#pragma once
+
+#include <bit>
+#include <span>
+#include <vector>
+
+#include "01_base/cpu_features.h"
+#include "07_intersectors/intersect_all.h"
+
+namespace rtk::test {
+
+/// Closest hits of `rays` among all `triangles` with one intersector, ISA and width.
+inline std::vector<Hit> trace_all(const TriangleSoA& triangles, IntersectorKind kind, Isa isa,
+                                  int width, std::span<const Ray> rays) {
+  std::vector<Hit> hits(rays.size());
+  RTK_PICK_ISA(isa, intersect_all)(triangles, kind, width, rays, hits);
+  return hits;
+}
+
+/// Whether two hits are the same bit for bit.
+inline bool same_bits(const Hit& a, const Hit& b) {
+  return std::bit_cast<uint32_t>(a.t) == std::bit_cast<uint32_t>(b.t) &&
+         std::bit_cast<uint32_t>(a.u) == std::bit_cast<uint32_t>(b.u) &&
+         std::bit_cast<uint32_t>(a.v) == std::bit_cast<uint32_t>(b.v) && a.prim == b.prim;
+}
+
+}  // namespace rtk::test
