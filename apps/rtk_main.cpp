@@ -1,67 +1,58 @@
-// The rtk command line: `rtk info` for now; later chapters add their commands here.
+// The rtk command line: one command per file (cmd_*.cpp), dispatched here; errors are reported
+// here, one line on stderr that names the command and the option or file, and exit status 2.
 #include <cstdio>
 #include <exception>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "01_base/cpu_features.h"
+#include "commands.h"
+#include "options.h"
 
 namespace {
 
-// Options may be written with one dash or two.
-std::string_view option_name(std::string_view arg) {
-  if (arg.starts_with("--")) return arg.substr(2);
-  if (arg.starts_with("-")) return arg.substr(1);
-  return {};
-}
-
-int run_info(const std::vector<std::string_view>& args) {
-  std::string_view requested;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string_view name = option_name(args[i]);
-    if (name == "isa" && i + 1 < args.size()) {
-      requested = args[++i];
-    } else {
-      throw std::invalid_argument("info: unknown option '" + std::string(args[i]) + "'");
-    }
-  }
-  const rtk::Isa chosen = rtk::choose_isa(requested);  // refuses a bad -isa before printing
-  const rtk::CpuFeatures& f = rtk::cpu_features();
-  std::printf("cpu: %s (%s)\n", f.brand.c_str(), f.vendor.c_str());
-  std::printf("isas:");
-  for (rtk::Isa isa : rtk::kAllIsas)
-    std::printf(" %s%s", std::string(rtk::isa_name(isa)).c_str(),
-                rtk::isa_supported(isa) ? "" : "(no)");
-  std::printf("\nvariant: %s%s\n", std::string(rtk::isa_name(chosen)).c_str(),
-              requested.empty() ? " (best the CPU runs)" : " (forced by -isa)");
-  return 0;
-}
-
-void usage() {
-  std::fprintf(stderr,
-               "usage: rtk info [-isa scalar|sse4|avx2|avx512]\n"
-               "  info   print the CPU's instruction sets and the kernel variant chosen\n");
-}
+constexpr const char* kUsage =
+    "usage: rtk COMMAND [options]   (options take one dash or two)\n"
+    "  info    [-isa scalar|sse4|avx2|avx512]\n"
+    "          the CPU's instruction sets and the kernel variant chosen\n"
+    "  rays    -i SCENE.obj -kind primary|diffuse|shadow|random -n COUNT [-seed K] -o R.rays\n"
+    "          generate rays for a scene (deterministic for a seed; default seed 1)\n"
+    "  trace   -i SCENE.obj -rays R.rays (-hits H.hits | -occl O.occl)\n"
+    "          [-accel SPEC] [-tri SPEC] [-isa NAME] [-threads N] [-repeat N]\n"
+    "          trace rays with RTK; one JSON line per step on stdout (median of -repeat runs)\n"
+    "  compare A.hits B.hits | A.occl B.occl [-rays R.rays] [-tolerance T] [-allow P] [-show N]\n"
+    "          agreement of two tracers: exit 0 when at most P percent of the rays differ\n"
+    "          (default 0), 1 when more do. Hits agree with the same primID and\n"
+    "          |t1 - t2| <= T max(|t|, 1), or T max(|t|, |org|/|dir|) given the rays\n"
+    "          (default T 1e-4); -show lists the first N differing rays (default 10)\n"
+    "  help    this text\n"
+    "exit status: 0 success, 1 compare found differences, 2 error (message on stderr)\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string_view> args(argv + 1, argv + argc);
   if (args.empty()) {
-    usage();
-    return 2;
+    std::fputs(kUsage, stderr);
+    return rtk::cli::kExitError;
   }
+  const std::string command(args.front());
+  const std::span<const std::string_view> rest(args.data() + 1, args.size() - 1);
   try {
-    const std::string_view command = args.front();
-    args.erase(args.begin());
-    if (command == "info") return run_info(args);
-    std::fprintf(stderr, "rtk: unknown command '%s'\n", std::string(command).c_str());
-    usage();
-    return 2;
+    if (command == "info") return rtk::cli::run_info(rest);
+    if (command == "rays") return rtk::cli::run_rays(rest);
+    if (command == "trace") return rtk::cli::run_trace(rest);
+    if (command == "compare") return rtk::cli::run_compare(rest);
+    if (command == "help" || command == "-h" || command == "-help" || command == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    std::fprintf(stderr, "rtk: unknown command '%s'\n%s", command.c_str(), kUsage);
+    return rtk::cli::kExitError;
+  } catch (const rtk::cli::UsageError& e) {
+    std::fprintf(stderr, "rtk %s: %s (see 'rtk help')\n", command.c_str(), e.what());
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "rtk: %s\n", e.what());
-    return 1;
+    std::fprintf(stderr, "rtk %s: %s\n", command.c_str(), e.what());
   }
+  return rtk::cli::kExitError;
 }

@@ -1,0 +1,115 @@
+// `rtk trace`: builds RTK's structure for a scene and traces a .rays file through it, writing
+// .hits (closest hits) or .occl (occlusion) and one JSON line per step on stdout
+// (shared/ray-replay.md). Times are the median of -repeat runs.
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "01_base/timer.h"
+#include "api/accel.h"
+#include "commands.h"
+#include "io/obj_loader.h"
+#include "io/replay_files.h"
+#include "json_line.h"
+#include "options.h"
+
+namespace rtk::cli {
+
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double per_second_millions(size_t count, double seconds) {
+  return seconds > 0 ? double(count) / seconds * 1e-6 : 0.0;
+}
+
+}  // namespace
+
+int run_trace(std::span<const std::string_view> args) {
+  const Options options(
+      "trace", args,
+      {.with_value = {"i", "rays", "hits", "occl", "accel", "tri", "isa", "threads", "repeat"}, .flags = {}});
+  // Step 1: the command line, all of it checked before any file is read.
+  const std::string scene = options.required("i");
+  const std::string rays_file = options.required("rays");
+  const bool want_hits = options.has("hits"), want_occl = options.has("occl");
+  if (want_hits == want_occl)
+    throw options.error(want_hits ? "options -hits and -occl exclude each other"
+                                  : "missing option -hits or -occl (what to write)");
+  const std::string output = want_hits ? options.required("hits") : options.required("occl");
+  AccelConfig config;
+  config.accel = options.get("accel", "");
+  config.tri = options.get("tri", "");
+  if (options.has("isa")) config.isa = choose_isa(options.required("isa"));
+  config.threads = int(options.get_count("threads", 1, 1, 1024));
+  const size_t repeat = options.get_count("repeat", 1, 1, 1000);
+  resolve_config(config);  // refuses an unknown -accel or -tri before a large scene is loaded
+
+  // Step 2: the rays (a damaged file is refused before the scene is read) and the scene.
+  const std::vector<Ray> rays = read_rays(rays_file);
+  Timer timer;
+  const TriangleMesh mesh = load_obj(scene);
+  JsonLine()
+      .add("op", "load")
+      .add("file", scene)
+      .add("vertices", mesh.vertices.size())
+      .add("triangles", mesh.size())
+      .add("seconds", timer.seconds())
+      .print();
+
+  // Step 3: build, -repeat times; the last structure is kept.
+  std::vector<double> build_seconds;
+  std::optional<Accel> accel;
+  for (size_t r = 0; r < repeat; ++r) {
+    accel.reset();
+    accel.emplace(mesh, config);
+    build_seconds.push_back(accel->info().build_seconds);
+  }
+  const AccelInfo& info = accel->info();
+  const double build = median(build_seconds);
+  JsonLine()
+      .add("op", "build")
+      .add("accel", info.accel)
+      .add("tri", info.tri)
+      .add("isa", isa_name(info.isa))
+      .add("triangles", info.triangles)
+      .add("seconds", build)
+      .add("mtris_per_s", per_second_millions(info.triangles, build))
+      .add("bytes", info.bytes)
+      .add("threads", info.threads)
+      .print();
+
+  // Step 4: trace, -repeat times; every run writes the same answers.
+  std::vector<double> trace_seconds;
+  std::vector<Hit> hits(want_hits ? rays.size() : 0);
+  std::vector<uint8_t> occluded(want_occl ? rays.size() : 0);
+  for (size_t r = 0; r < repeat; ++r) {
+    timer.reset();
+    if (want_hits) accel->intersect(rays, hits);
+    else accel->occluded(rays, occluded);
+    trace_seconds.push_back(timer.seconds());
+  }
+  const double seconds = median(trace_seconds);
+  JsonLine line;
+  line.add("op", want_hits ? "intersect" : "occluded")
+      .add("rays", rays.size())
+      .add("seconds", seconds)
+      .add("mrays_per_s", per_second_millions(rays.size(), seconds))
+      .add("threads", info.threads);
+  if (want_hits) {
+    line.add("hits", size_t(std::count_if(hits.begin(), hits.end(), [](const Hit& h) { return h.found(); })));
+    write_hits(output, hits);
+  } else {
+    line.add("occluded", size_t(std::count(occluded.begin(), occluded.end(), uint8_t(1))));
+    write_occlusion(output, occluded);
+  }
+  line.add("repeat", repeat).add("output", output).print();
+  return 0;
+}
+
+}  // namespace rtk::cli

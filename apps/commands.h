@@ -1,0 +1,30 @@
+/// \file
+/// The commands of `rtk`, one file each (cmd_*.cpp). A command takes its arguments (without
+/// the command's name) and returns the exit status; errors are thrown (cli::UsageError for the
+/// command line, rtk::FileError for files) and reported by main().
+///
+/// Exit status, for every command: 0 success; 1 `compare` found disagreements beyond what
+/// its options allow; 2 an error, with a message on stderr that names the option, or the file
+/// and line.
+#pragma once
+
+#include <span>
+#include <string_view>
+
+namespace rtk::cli {
+
+/// The exit status of a command that found its inputs to differ (`rtk compare`).
+inline constexpr int kExitDiffer = 1;
+/// The exit status of a command that could not do its work.
+inline constexpr int kExitError = 2;
+
+/// `rtk info [-isa NAME]`: the CPU, its instruction sets and the variant that runs.
+int run_info(std::span<const std::string_view> args);
+/// `rtk rays -i SCENE.obj -kind K -n COUNT [-seed S] -o R.rays`.
+int run_rays(std::span<const std::string_view> args);
+/// `rtk trace -i SCENE.obj -rays R.rays (-hits H.hits | -occl O.occl) [...]`.
+int run_trace(std::span<const std::string_view> args);
+/// `rtk compare A B [-rays R.rays] [-tolerance T] [-allow P] [-show N]`.
+int run_compare(std::span<const std::string_view> args);
+
+}  // namespace rtk::cli

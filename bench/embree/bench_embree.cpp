@@ -1,0 +1,306 @@
+// RTK against Embree 3 on the same rays: for each scene and ray kind, single-threaded tracing
+// speed (Mrays/s) of Embree's rtcIntersect1/rtcOccluded1 and of RTK's variants through the
+// public API, their ratio, the agreement of their answers, and build speed and memory.
+//
+//   build/bench/embree/bench_embree [--rays=N] [--threads=N] [--scenes=A.obj,B.obj|DIR]
+//                                   [--procedural=0] [--rtk=default|all] [benchmark options]
+//   RTK_SCENES=../shared/scenes/bunny_stanford_full build/bench/embree/bench_embree
+//
+// Benchmark names: build/SCENE/BUILDER and trace/SCENE/KIND/TRACER, where BUILDER is "embree"
+// or "rtk:ACCEL:TRI" (RTK's builders are the same for every ISA) and TRACER "embree" or
+// "rtk:ISA:ACCEL:TRI". Each scene's Embree benchmarks run before RTK's, so that RTK's
+// counters can hold the ratio to Embree measured in the same run (the machine is shared and
+// noisy: ratios taken close together are what this program is for). bench/embree/make_table.sh
+// turns the JSON output into the markdown table.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "01_base/timer.h"
+#include "api/accel.h"
+#include "embree/embree_scene.h"
+#include "io/obj_loader.h"
+#include "replay/compare.h"
+#include "replay/ray_generator.h"
+#include "scenes.h"
+
+namespace {
+
+using namespace rtk;
+
+// Step 1: what to measure, from the command line.
+struct Settings {
+  size_t rays = size_t(1) << 18;
+  int threads = 1;  // build threads of both; tracing is always one thread
+  bool procedural = true;
+  bool all_rtk = false;
+  std::vector<std::filesystem::path> scene_files;
+};
+Settings settings;
+
+struct Scene {
+  std::string name;
+  TriangleMesh mesh;
+  std::unique_ptr<bench::EmbreeScene> embree;                  // built on first use
+  std::map<std::string, std::unique_ptr<Accel>> rtk;          // by tracer name
+  std::map<RayKind, std::vector<Ray>> rays;                    // made on first use
+  std::map<RayKind, std::vector<Hit>> embree_hits;             // Embree's answers, for agreement
+  std::map<RayKind, std::vector<uint8_t>> embree_occluded;
+  std::map<RayKind, double> embree_mrays;                      // measured in this run
+};
+std::vector<std::unique_ptr<Scene>> scenes;
+
+// The kinds of ray and the query each one makes: shadow rays ask for occlusion.
+constexpr RayKind kKinds[] = {RayKind::primary, RayKind::diffuse, RayKind::shadow};
+bool is_occlusion(RayKind kind) { return kind == RayKind::shadow; }
+
+const std::vector<Ray>& rays_for(Scene& s, RayKind kind) {
+  auto& rays = s.rays[kind];
+  if (rays.empty()) rays = generate_rays(s.mesh, kind, settings.rays, 1);
+  return rays;
+}
+
+bench::EmbreeScene& embree_for(Scene& s) {
+  if (!s.embree) s.embree = std::make_unique<bench::EmbreeScene>(s.mesh, settings.threads);
+  return *s.embree;
+}
+
+std::string tracer_name(const AccelInfo& info) {
+  return "rtk:" + std::string(isa_name(info.isa)) + ":" + info.accel + ":" + info.tri;
+}
+
+// The RTK configurations to compare: the default one of every ISA the CPU runs and, on the
+// best ISA, every other structure (--rtk=all: every structure and layout on every ISA).
+std::vector<AccelConfig> rtk_configs() {
+  std::vector<AccelConfig> configs;
+  std::vector<std::string> seen;
+  auto add = [&](AccelConfig c) {
+    try {
+      const AccelInfo info = resolve_config(c);
+      const std::string name = tracer_name(info);
+      if (std::find(seen.begin(), seen.end(), name) != seen.end()) return;
+      seen.push_back(name);
+      c.accel = info.accel;
+      c.tri = info.tri;
+      configs.push_back(c);
+    } catch (const std::invalid_argument&) {
+      // not built into this RTK yet
+    }
+  };
+  for (Isa isa : supported_isas()) add({.accel = "", .tri = "", .isa = isa, .threads = settings.threads});
+  for (Isa isa : supported_isas()) {
+    if (!settings.all_rtk && isa != best_isa()) continue;
+    for (const std::string& accel : supported_accels()) {
+      if (settings.all_rtk) {
+        for (const std::string& tri : supported_tris(accel))
+          add({.accel = accel, .tri = tri, .isa = isa, .threads = settings.threads});
+      } else {
+        add({.accel = accel, .tri = "", .isa = isa, .threads = settings.threads});
+      }
+    }
+  }
+  return configs;
+}
+
+void set_rate(benchmark::State& state, double count, const char* name) {
+  state.counters[name] = benchmark::Counter(count * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Step 2: the benchmarks.
+void build_embree(benchmark::State& state, Scene* s) {
+  size_t bytes = 0, bvh_bytes = 0;
+  for (auto _ : state) {
+    Timer timer;
+    bench::EmbreeScene scene(s->mesh, settings.threads);
+    state.SetIterationTime(timer.seconds());
+    bytes = scene.total_bytes();
+    bvh_bytes = scene.bvh_bytes();
+  }
+  set_rate(state, double(s->mesh.size()), "Mtris_per_s");
+  state.counters["bytes_per_tri"] = double(bytes) / double(s->mesh.size());
+  state.counters["bvh_bytes_per_tri"] = double(bvh_bytes) / double(s->mesh.size());
+  state.counters["triangles"] = double(s->mesh.size());
+  state.counters["threads"] = settings.threads;
+}
+
+void build_rtk(benchmark::State& state, Scene* s, AccelConfig config) {
+  size_t bytes = 0;
+  for (auto _ : state) {
+    Timer timer;
+    Accel accel(s->mesh, config);
+    state.SetIterationTime(timer.seconds());
+    bytes = accel.info().bytes;
+  }
+  set_rate(state, double(s->mesh.size()), "Mtris_per_s");
+  state.counters["bytes_per_tri"] = double(bytes) / double(s->mesh.size());
+  state.counters["triangles"] = double(s->mesh.size());
+  state.counters["threads"] = settings.threads;
+}
+
+// Times every iteration itself (manual time), so that the rate is known here and can be kept
+// for RTK's ratio.
+template <class Trace>
+double timed_trace(benchmark::State& state, size_t rays, const Trace& trace) {
+  double total = 0;
+  for (auto _ : state) {
+    Timer timer;
+    trace();
+    const double seconds = timer.seconds();
+    state.SetIterationTime(seconds);
+    total += seconds;
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(rays));
+  set_rate(state, double(rays), "Mrays_per_s");
+  return total > 0 ? double(state.iterations()) * double(rays) / total * 1e-6 : 0.0;
+}
+
+void trace_embree(benchmark::State& state, Scene* s, RayKind kind) {
+  const std::vector<Ray>& rays = rays_for(*s, kind);
+  const bench::EmbreeScene& embree = embree_for(*s);
+  double mrays = 0;
+  if (is_occlusion(kind)) {
+    std::vector<uint8_t>& out = s->embree_occluded[kind];
+    out.assign(rays.size(), 0);
+    mrays = timed_trace(state, rays.size(), [&] { embree.occluded(rays, out); });
+  } else {
+    std::vector<Hit>& out = s->embree_hits[kind];
+    out.assign(rays.size(), Hit{});
+    mrays = timed_trace(state, rays.size(), [&] { embree.intersect(rays, out); });
+  }
+  s->embree_mrays[kind] = mrays;
+}
+
+void trace_rtk(benchmark::State& state, Scene* s, RayKind kind, AccelConfig config) {
+  const std::vector<Ray>& rays = rays_for(*s, kind);
+  const std::string name = tracer_name(resolve_config(config));
+  auto& accel = s->rtk[name];
+  if (!accel) accel = std::make_unique<Accel>(s->mesh, config);
+  double mrays = 0;
+  double agree = -1;
+  if (is_occlusion(kind)) {
+    std::vector<uint8_t> out(rays.size());
+    mrays = timed_trace(state, rays.size(), [&] { accel->occluded(rays, out); });
+    const auto& ref = s->embree_occluded[kind];
+    if (ref.size() == out.size()) agree = compare_occlusion_arrays(out, ref).agree_percent();
+  } else {
+    std::vector<Hit> out(rays.size());
+    mrays = timed_trace(state, rays.size(), [&] { accel->intersect(rays, out); });
+    const auto& ref = s->embree_hits[kind];
+    if (ref.size() == out.size()) agree = compare_hit_arrays(out, ref, 1e-4, 0, rays).agree_percent();
+  }
+  const auto embree = s->embree_mrays.find(kind);
+  if (embree != s->embree_mrays.end() && embree->second > 0)
+    state.counters["rtk_vs_embree"] = mrays / embree->second;
+  if (agree >= 0) state.counters["agree_pct"] = agree;
+}
+
+// Step 3: the scenes: procedural ones made here, real ones read from OBJ files.
+void add_scene(std::string name, TriangleMesh mesh) {
+  auto s = std::make_unique<Scene>();
+  s->name = std::move(name);
+  s->mesh = std::move(mesh);
+  scenes.push_back(std::move(s));
+}
+
+void add_scene_files(const std::string& list) {
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t end = std::min(list.find_first_of(",:", start), list.size());
+    const std::filesystem::path path = list.substr(start, end - start);
+    start = end + 1;
+    if (path.empty()) continue;
+    if (std::filesystem::is_directory(path)) {
+      std::vector<std::filesystem::path> found;
+      for (const auto& entry : std::filesystem::recursive_directory_iterator(path))
+        if (entry.path().extension() == ".obj") found.push_back(entry.path());
+      std::sort(found.begin(), found.end());
+      settings.scene_files.insert(settings.scene_files.end(), found.begin(), found.end());
+    } else {
+      settings.scene_files.push_back(path);
+    }
+  }
+}
+
+// Reads and removes this program's own options from argv, leaving Google Benchmark's.
+void parse_settings(int& argc, char** argv) {
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* prefix) -> const char* {
+      return arg.rfind(prefix, 0) == 0 ? argv[i] + std::string(prefix).size() : nullptr;
+    };
+    if (const char* v = value("--rays=")) settings.rays = std::strtoull(v, nullptr, 10);
+    else if (const char* v = value("--threads=")) settings.threads = std::atoi(v);
+    else if (const char* v = value("--scenes=")) add_scene_files(v);
+    else if (const char* v = value("--procedural=")) settings.procedural = std::atoi(v) != 0;
+    else if (const char* v = value("--rtk=")) settings.all_rtk = std::string(v) == "all";
+    else argv[kept++] = argv[i];
+  }
+  argc = kept;
+  if (settings.rays == 0) settings.rays = 1;
+  if (settings.threads < 1) settings.threads = 1;
+  if (const char* env = std::getenv("RTK_SCENES")) add_scene_files(env);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  parse_settings(argc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+
+  if (settings.procedural) {
+    add_scene("sphere", test::make_sphere(256, 512));
+    add_scene("soup", test::make_random_soup(100000, 1, 0.05f));
+    add_scene("terrain", test::make_terrain(256, 1));
+    add_scene("slivers", test::make_slivers(2000, 1));
+  }
+  for (const auto& file : settings.scene_files) {
+    try {
+      add_scene(file.stem().string(), load_obj(file));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "bench_embree: skipping %s\n", e.what());
+    }
+  }
+
+  const std::vector<AccelConfig> configs = rtk_configs();
+  for (auto& owned : scenes) {
+    Scene* s = owned.get();
+    benchmark::RegisterBenchmark(("build/" + s->name + "/embree").c_str(), build_embree, s)
+        ->UseManualTime()->Unit(benchmark::kMillisecond);
+    // The builders are not compiled per ISA: one build benchmark per structure and layout.
+    std::vector<std::string> built;
+    for (const AccelConfig& c : configs) {
+      const AccelInfo info = resolve_config(c);
+      const std::string name = "rtk:" + info.accel + ":" + info.tri;
+      if (std::find(built.begin(), built.end(), name) != built.end()) continue;
+      built.push_back(name);
+      benchmark::RegisterBenchmark(("build/" + s->name + "/" + name).c_str(), build_rtk, s, c)
+          ->UseManualTime()->Unit(benchmark::kMillisecond);
+    }
+    for (RayKind kind : kKinds) {
+      const std::string prefix = "trace/" + s->name + "/" + std::string(ray_kind_name(kind)) + "/";
+      benchmark::RegisterBenchmark((prefix + "embree").c_str(), trace_embree, s, kind)
+          ->UseManualTime()->Unit(benchmark::kMillisecond);
+      for (const AccelConfig& c : configs)
+        benchmark::RegisterBenchmark((prefix + tracer_name(resolve_config(c))).c_str(), trace_rtk, s, kind, c)
+            ->UseManualTime()->Unit(benchmark::kMillisecond);
+    }
+  }
+
+  benchmark::AddCustomContext("embree", bench::EmbreeScene::version() + ", RTC_BUILD_QUALITY_MEDIUM");
+  benchmark::AddCustomContext("build_threads", std::to_string(settings.threads));
+  benchmark::AddCustomContext("trace_threads", "1");
+  benchmark::AddCustomContext("rays_per_benchmark", std::to_string(settings.rays));
+  benchmark::AddCustomContext("rtk_best_isa", std::string(isa_name(best_isa())));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs the Embree comparison and writes its markdown table (bench/embree/results.md, for the
+# book); the raw JSON stays in the build folder (bench/embree_results.json):
+#
+#   bash bench/embree/make_table.sh            # build dir "build", scenes from ../shared/scenes
+#   BUILD_DIR=build-x RTK_SCENES=/path/a.obj,/path/b.obj bash bench/embree/make_table.sh
+#
+# Extra arguments go to bench_embree (e.g. --rays=65536 --benchmark_min_time=0.2).
+# The formatter is a CMake script (format_table.cmake): no python needed.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+build_dir=${BUILD_DIR:-$root/build}
+cmake --build "$build_dir" --target bench_embree -j"$(nproc)"
+# The real meshes: a few of different character, when the shared scene folder is there.
+if [ -z "${RTK_SCENES:-}" ]; then
+  shared="$root/../shared/scenes"
+  list=""
+  for f in bunny_stanford_full/stanford-bunny.obj happy_buddha_100k/buddha.obj \
+           sponza_dabrovic/sponza.obj dragon_stanford/dragon_vrip_res3.obj teapot_newell/teapot.obj; do
+    [ -f "$shared/$f" ] && list="$list${list:+,}$shared/$f"
+  done
+  export RTK_SCENES="$list"
+fi
+json="$build_dir/bench/embree_results.json"
+"$build_dir/bench/bench_embree" --benchmark_format=console --benchmark_out="$json" \
+  --benchmark_out_format=json "$@"
+cmake -DIN="$json" -DOUT="$here/results.md" -P "$here/format_table.cmake"

@@ -1,0 +1,101 @@
+/// \file
+/// RTK's public API: build an acceleration structure over an indexed triangle set, then ask
+/// it for closest hits and for occlusion. This is the layer `rtk trace`, the renderer and the
+/// Embree comparison use; it links the chapters' per-ISA kernels and chooses among them.
+///
+/// The choice is made with the configuration strings of the Embree 1.1 guide, in our names:
+/// - `accel`: `bvh2`, `bvh4` or `bvh8`, optionally followed by the split strategy,
+///   `.objectsplit` (the default) or `.spatialsplit`;
+/// - `tri`: the leaf triangle layout (`triangle1`, `triangle4`, ...) optionally followed by
+///   the intersector, `.moeller`, `.pluecker`, or `.fast` / `.accurate` (the fastest or most
+///   accurate intersector the layout has).
+/// Only combinations that the chapters implement are accepted; any other is refused with a
+/// message that lists the supported ones (supported_accels(), supported_tris()). Empty strings
+/// mean the defaults, which follow the guide's advice adapted to the ISA: the node width the
+/// ISA's registers fit (BVH4 for scalar and SSE4, BVH8 for AVX2 and AVX-512), the best builder
+/// available, and the layout and intersector the chosen kernels are fastest with.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "01_base/cpu_features.h"
+#include "01_base/ray.h"
+#include "01_base/triangle_mesh.h"
+
+namespace rtk {
+
+/// What to build: configuration strings, ISA and thread count.
+struct AccelConfig {
+  std::string accel;       ///< e.g. "bvh4.objectsplit"; empty for the default
+  std::string tri;         ///< e.g. "triangle4.moeller"; empty for the default
+  std::optional<Isa> isa;  ///< the kernels' variant; nothing for the best the CPU runs
+  int threads = 1;         ///< threads for building and tracing (1: the calling thread only)
+};
+
+/// What was built, with the configuration resolved to full names.
+struct AccelInfo {
+  std::string accel;         ///< e.g. "bvh4.objectsplit"
+  std::string tri;           ///< e.g. "triangle4.moeller"
+  Isa isa = Isa::scalar;     ///< the variant that runs
+  int threads = 1;           ///< threads used for building and tracing
+  size_t triangles = 0;      ///< triangles in the scene (zero-area ones included)
+  size_t bytes = 0;          ///< memory the structure holds: nodes, leaves and any vertex data
+  double build_seconds = 0;  ///< wall-clock time of the build
+};
+
+/// One variant's built structure and kernels; Accel holds one.
+class AccelBackend {
+ public:
+  virtual ~AccelBackend() = default;
+  /// Closest hits of rays[i] into hits[i], on the calling thread.
+  virtual void intersect(std::span<const Ray> rays, std::span<Hit> hits) const = 0;
+  /// Occlusion of rays[i] into occluded[i] (1 blocked, 0 free), on the calling thread.
+  virtual void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const = 0;
+  /// Memory held by the structure, in bytes.
+  virtual size_t bytes() const = 0;
+};
+
+/// An acceleration structure over a triangle mesh, ready to trace. It keeps what it needs
+/// (the mesh may be destroyed after construction); tracing is const and may be called from
+/// several threads at once.
+class Accel {
+ public:
+  /// Builds the structure. Throws std::invalid_argument, naming the option (-accel, -tri,
+  /// -isa, -threads) and listing what is supported, when the configuration is not one RTK has.
+  Accel(const TriangleMesh& mesh, const AccelConfig& config = {});
+  ~Accel();
+  Accel(Accel&&) noexcept;
+  Accel& operator=(Accel&&) noexcept;
+
+  /// Finds the closest hit of every ray: hits[i] for rays[i] (the spans have the same length).
+  /// Invalid rays (rtk::is_valid) get a miss. Uses `threads` threads when there are enough rays.
+  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const;
+
+  /// Whether each ray is blocked anywhere in [tnear, tfar]: occluded[i] = 1 or 0.
+  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const;
+
+  /// The configuration that was built, its size and its build time.
+  const AccelInfo& info() const { return info_; }
+
+ private:
+  AccelInfo info_;
+  std::unique_ptr<AccelBackend> backend_;
+};
+
+/// The accepted `-accel` strings, full names (e.g. "bvh4.objectsplit").
+std::vector<std::string> supported_accels();
+
+/// The accepted `-tri` strings for an accel string, full names (e.g. "triangle4.moeller").
+std::vector<std::string> supported_tris(const std::string& accel = "");
+
+/// Resolves configuration strings to full names without building anything, so that a command
+/// line can refuse a bad one before it loads a large scene. Throws like Accel's constructor.
+AccelInfo resolve_config(const AccelConfig& config);
+
+}  // namespace rtk
