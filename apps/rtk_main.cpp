@@ -17,14 +17,22 @@ constexpr const char* kUsage =
     "          the CPU's instruction sets and the kernel variant chosen\n"
     "  rays    -i SCENE.obj -kind primary|diffuse|shadow|random -n COUNT [-seed K] -o R.rays\n"
     "          generate rays for a scene (deterministic for a seed; default seed 1)\n"
-    "  trace   -i SCENE.obj -rays R.rays (-hits H.hits | -occl O.occl)\n"
+    "  trace   -i SCENE.obj -rays R.rays (-hits H.hits | -occl O.occl) [-motion S1.obj]\n"
     "          [-accel SPEC] [-tri SPEC] [-isa NAME] [-threads N] [-repeat N]\n"
-    "          trace rays with RTK; one JSON line per step on stdout (median of -repeat runs)\n"
+    "          trace rays with RTK; one JSON line per step on stdout (median of -repeat runs);\n"
+    "          -motion gives the scene at shutter time 1 (motion blur, -accel bvh4mb)\n"
     "  compare A.hits B.hits | A.occl B.occl [-rays R.rays] [-tolerance T] [-allow P] [-show N]\n"
     "          agreement of two tracers: exit 0 when at most P percent of the rays differ\n"
     "          (default 0), 1 when more do. Hits agree with the same primID and\n"
     "          |t1 - t2| <= T max(|t|, 1), or T max(|t|, |org|/|dir|) given the rays\n"
     "          (default T 1e-4); -show lists the first N differing rays (default 10)\n"
+    "  render  [-c SCENE.ecs] [-size W H] [-spp N] [-depth N] [-seed N] [-threads N] [-accel SPEC]\n"
+    "          [-tri SPEC] [-isa NAME] [any option of the guide's scripts] -o IMAGE.png|tga|ppm|hdr|pfm\n"
+    "          render with the path tracer; `rtk -c SCENE.ecs ... -o IMAGE` is the same\n"
+    "  view    [-c SCENE.ecs] [options of render] [-frames N [-screenshot FILE.png]]\n"
+    "          the interactive viewer (also `rtk -c SCENE.ecs` without -o): mouse orbits, pans,\n"
+    "          dollies; c prints the camera; -frames N closes it after N frames,\n"
+    "          -screenshot then saves the window\n"
     "  help    this text\n"
     "exit status: 0 success, 1 compare found differences, 2 error (message on stderr)\n";
 
@@ -43,6 +51,12 @@ int main(int argc, char** argv) {
     if (command == "rays") return rtk::cli::run_rays(rest);
     if (command == "trace") return rtk::cli::run_trace(rest);
     if (command == "compare") return rtk::cli::run_compare(rest);
+    if (command == "render") return rtk::cli::run_render(rest);
+    if (command == "view") return rtk::cli::run_render(rest, true);
+    // The guide's short form: options without a command render (rtk -c scene.ecs -o out.png).
+    if (command.size() > 1 && command[0] == '-' && command != "-h" && command != "-help" &&
+        command != "--help")
+      return rtk::cli::run_render(args, true);
     if (command == "help" || command == "-h" || command == "-help" || command == "--help") {
       std::fputs(kUsage, stdout);
       return 0;

@@ -48,7 +48,7 @@ Settings settings;
 struct Scene {
   std::string name;
   TriangleMesh mesh;
-  std::unique_ptr<bench::EmbreeScene> embree;                  // built on first use
+  std::unique_ptr<EmbreeScene> embree;                  // built on first use
   std::map<std::string, std::unique_ptr<Accel>> rtk;          // by tracer name
   std::map<RayKind, std::vector<Ray>> rays;                    // made on first use
   std::map<RayKind, std::vector<Hit>> embree_hits;             // Embree's answers, for agreement
@@ -67,8 +67,8 @@ const std::vector<Ray>& rays_for(Scene& s, RayKind kind) {
   return rays;
 }
 
-bench::EmbreeScene& embree_for(Scene& s) {
-  if (!s.embree) s.embree = std::make_unique<bench::EmbreeScene>(s.mesh, settings.threads);
+EmbreeScene& embree_for(Scene& s) {
+  if (!s.embree) s.embree = std::make_unique<EmbreeScene>(s.mesh, settings.threads);
   return *s.embree;
 }
 
@@ -118,7 +118,7 @@ void build_embree(benchmark::State& state, Scene* s) {
   size_t bytes = 0, bvh_bytes = 0;
   for (auto _ : state) {
     Timer timer;
-    bench::EmbreeScene scene(s->mesh, settings.threads);
+    EmbreeScene scene(s->mesh, settings.threads);
     state.SetIterationTime(timer.seconds());
     bytes = scene.total_bytes();
     bvh_bytes = scene.bvh_bytes();
@@ -163,7 +163,7 @@ double timed_trace(benchmark::State& state, size_t rays, const Trace& trace) {
 
 void trace_embree(benchmark::State& state, Scene* s, RayKind kind) {
   const std::vector<Ray>& rays = rays_for(*s, kind);
-  const bench::EmbreeScene& embree = embree_for(*s);
+  const EmbreeScene& embree = embree_for(*s);
   double mrays = 0;
   if (is_occlusion(kind)) {
     std::vector<uint8_t>& out = s->embree_occluded[kind];
@@ -295,7 +295,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  benchmark::AddCustomContext("embree", bench::EmbreeScene::version() + ", RTC_BUILD_QUALITY_MEDIUM");
+  benchmark::AddCustomContext("embree", EmbreeScene::version() + ", RTC_BUILD_QUALITY_MEDIUM");
   benchmark::AddCustomContext("build_threads", std::to_string(settings.threads));
   benchmark::AddCustomContext("trace_threads", "1");
   benchmark::AddCustomContext("rays_per_benchmark", std::to_string(settings.rays));

@@ -61,16 +61,16 @@ int run(std::span<const std::string_view> args) {
   const TriangleMesh mesh = load_obj(scene);
   const std::vector<Ray> rays = read_rays(rays_file);
   std::vector<double> build_seconds;
-  std::unique_ptr<bench::EmbreeScene> embree;
+  std::unique_ptr<EmbreeScene> embree;
   for (size_t r = 0; r < repeat; ++r) {
     embree.reset();
-    embree = std::make_unique<bench::EmbreeScene>(mesh, threads);
+    embree = std::make_unique<EmbreeScene>(mesh, threads);
     build_seconds.push_back(embree->build_seconds());
   }
   const double build = median(build_seconds);
   JsonLine()
       .add("op", "build")
-      .add("accel", "embree-" + bench::EmbreeScene::version())
+      .add("accel", "embree-" + EmbreeScene::version())
       .add("tri", "embree")
       .add("isa", "embree")
       .add("triangles", mesh.size())

@@ -1,6 +1,9 @@
 #include "api/accel.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -8,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "01_base/timer.h"
+#include "06_layouts/triangle_config.h"
 #include "api/backends.h"
 
 namespace rtk {
@@ -44,13 +48,18 @@ std::vector<std::string_view> preferred_bases(Isa isa) {
   if (isa == Isa::avx2 || isa == Isa::avx512) return {"bvh8", "bvh4", "bvh2"};
   return {"bvh4", "bvh8", "bvh2"};
 }
-std::vector<std::string_view> preferred_layouts(Isa isa) {
-  if (isa == Isa::avx2 || isa == Isa::avx512) return {"triangle8", "triangle4", "triangle4v", "triangle4i", "triangle1", "triangle1v", "triangle1i"};
-  return {"triangle4", "triangle4v", "triangle4i", "triangle8", "triangle1", "triangle1v", "triangle1i"};
+// The memory the leaves of a default layout may take: the caller's budget, or half of the
+// machine's physical memory.
+size_t memory_budget(const AccelConfig& config) {
+  if (config.memory_budget) return config.memory_budget;
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? size_t(pages) * size_t(page) / 2 : std::numeric_limits<size_t>::max();
 }
 
-// The table row for a configuration, resolving defaults; throws naming the option.
-const BackendEntry& resolve(const AccelConfig& config, Isa isa) {
+// The table row for a configuration, resolving defaults for a scene of `triangles` (0 when
+// not known yet); `choice` receives why the layout was chosen. Throws naming the option.
+const BackendEntry& resolve(const AccelConfig& config, Isa isa, size_t triangles = 0,
+                            std::string* choice = nullptr) {
   const auto& table = backend_table();
   // Step 1: the acceleration structure and its split strategy.
   auto [base, split] = split_spec(config.accel);
@@ -81,36 +90,53 @@ const BackendEntry& resolve(const AccelConfig& config, Isa isa) {
   std::vector<const BackendEntry*> rows;
   for (const BackendEntry& e : table)
     if (accel_name(e) == accel) rows.push_back(&e);
+  if (base == "bvh4mb")  // chapter 8's structure is built from two meshes: api/motion_accel.h
+    throw std::invalid_argument("-accel: bvh4mb traces motion blur and needs the scene at time 1 too (-motion)");
   if (rows.empty())
     throw std::invalid_argument("-accel: '" + config.accel + "' is not available; supported: " +
                                 join(supported_accels()));
 
-  // Step 2: the triangle layout and its intersector.
-  auto [layout, intersector] = split_spec(config.tri);
-  if (layout.empty()) {
-    for (std::string_view l : preferred_layouts(isa)) {
-      if (std::any_of(rows.begin(), rows.end(), [&](const BackendEntry* e) { return e->layout == l; })) {
-        layout = l;
-        break;
-      }
-    }
-    if (layout.empty()) layout = rows.front()->layout;
-  }
-  if (intersector.empty()) intersector = "fast";
-  if (intersector != "moeller" && intersector != "pluecker" && intersector != "fast" && intersector != "accurate")
-    throw std::invalid_argument("-tri: unknown intersector '" + intersector +
-                                "' (expected moeller, pluecker, fast or accurate); supported with " +
-                                accel + ": " + join(supported_tris(accel)));
-  // Möller-Trumbore is the fast one and Plücker the accurate one (the guide, section 4.5).
-  std::vector<std::string_view> order;
-  if (intersector == "fast") order = {"moeller", "pluecker"};
-  else if (intersector == "accurate") order = {"pluecker", "moeller"};
-  else order = {intersector};
-  for (std::string_view i : order)
+  // Step 2: the triangle layout and its intersector. Chapter 6's parser resolves `.fast` and
+  // `.accurate` for the layout named; without -tri, chapter 6's rule picks the layout: the
+  // ISA's fastest blocks, unless the scene would not fit the memory budget with them (model no
+  // more than the scene needs).
+  auto row_for = [&](const TriangleConfig& c) -> const BackendEntry* {
     for (const BackendEntry* e : rows)
-      if (e->layout == layout && e->intersector == i) return *e;
-  throw std::invalid_argument("-tri: '" + (config.tri.empty() ? layout : config.tri) +
-                              "' is not available with " + accel + "; supported: " +
+      if (e->layout == layout_name(c.layout) && e->intersector == intersector_name(c.intersector)) return e;
+    return nullptr;
+  };
+  auto say = [&](const std::string& why) {
+    if (choice) *choice = why;
+  };
+  if (config.tri.empty()) {
+    const size_t budget = memory_budget(config);
+    const TriangleLayout fastest = choose_default_layout(0, isa);
+    const TriangleLayout chosen = choose_default_layout(triangles, isa, budget);
+    if (const BackendEntry* e = row_for({chosen, IntersectorKind::moeller})) {
+      say(chosen == fastest ? "default: " + std::string(layout_name(chosen)) + ", the fastest blocks for " +
+                                  std::string(isa_name(isa))
+                            : "default: " + std::string(layout_name(chosen)) + ", the leanest layout: " +
+                                  std::string(layout_name(fastest)) + " would need about " +
+                                  std::to_string(size_t(estimated_bytes_per_triangle(fastest) * double(triangles)) >> 20) +
+                                  " MiB of the " + std::to_string(budget >> 20) + " MiB budget");
+      return *e;
+    }
+    say("default: " + tri_name(*rows.front()) + ", the only leaves " + accel + " has");
+    return *rows.front();
+  }
+  TriangleConfig wanted;
+  try {
+    wanted = parse_triangle_config(config.tri);
+  } catch (const std::invalid_argument&) {
+    throw std::invalid_argument("-tri: '" + config.tri + "' is not a supported configuration; supported with " +
+                                accel + ": " + join(supported_tris(accel)) +
+                                " (a layout alone, or with .fast or .accurate, takes its fastest or most accurate intersector)");
+  }
+  if (const BackendEntry* e = row_for(wanted)) {
+    say("asked for " + config.tri);
+    return *e;
+  }
+  throw std::invalid_argument("-tri: '" + config.tri + "' is not available with " + accel + "; supported: " +
                               join(supported_tris(accel)));
 }
 
@@ -164,7 +190,7 @@ AccelInfo resolve_config(const AccelConfig& config) {
   check_threads(config.threads);
   AccelInfo info;
   info.isa = resolve_isa(config);
-  const BackendEntry& entry = resolve(config, info.isa);
+  const BackendEntry& entry = resolve(config, info.isa, 0, &info.choice);
   info.accel = accel_name(entry);
   info.tri = tri_name(entry);
   info.threads = config.threads;
@@ -174,7 +200,9 @@ AccelInfo resolve_config(const AccelConfig& config) {
 Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
   check_threads(config.threads);
   info_ = resolve_config(config);
-  const BackendEntry& entry = resolve(config, info_.isa);
+  // (The scene's size may change the default layout that resolve_config() reported.)
+  const BackendEntry& entry = resolve(config, info_.isa, mesh.size(), &info_.choice);
+  info_.tri = tri_name(entry);
   if (mesh.vertices.size() >= kInvalidPrim || mesh.triangles.size() >= kInvalidPrim)
     throw std::invalid_argument("the scene has more than 2^32 - 2 triangles or vertices");
   for (const auto& tri : mesh.triangles)

@@ -6,14 +6,17 @@
 /// The choice is made with the configuration strings of the Embree 1.1 guide, in our names:
 /// - `accel`: `bvh2`, `bvh4` or `bvh8`, optionally followed by the split strategy,
 ///   `.objectsplit` (the default) or `.spatialsplit`;
-/// - `tri`: the leaf triangle layout (`triangle1`, `triangle4`, ...) optionally followed by
-///   the intersector, `.moeller`, `.pluecker`, or `.fast` / `.accurate` (the fastest or most
-///   accurate intersector the layout has).
+/// - `tri`: the leaf triangle layout (`triangle1`, `triangle4`, `triangle8`, `triangle1i`,
+///   `triangle4i`, `triangle1v`, `triangle4v`: chapter 6) optionally followed by the intersector
+///   (chapter 7), `.moeller`, `.pluecker`, `.watertight`, or `.fast` / `.accurate` (the fastest
+///   or most accurate intersector that layout has). BVH2 has triangle1 leaves only.
 /// Only combinations that the chapters implement are accepted; any other is refused with a
 /// message that lists the supported ones (supported_accels(), supported_tris()). Empty strings
 /// mean the defaults, which follow the guide's advice adapted to the ISA: the node width the
-/// ISA's registers fit (BVH4 for scalar and SSE4, BVH8 for AVX2 and AVX-512), the best builder
-/// available, and the layout and intersector the chosen kernels are fastest with.
+/// ISA's registers fit (BVH4 for scalar and SSE4, BVH8 for AVX2 and AVX-512), object splits
+/// (chapter 5 measures when spatial splits pay), and chapter 6's default layout with
+/// Möller-Trumbore: the ISA's fastest blocks unless the scene would not fit the memory budget,
+/// then the leanest (AccelInfo::choice says which rule chose).
 #pragma once
 
 #include <cstddef>
@@ -36,12 +39,16 @@ struct AccelConfig {
   std::string tri;         ///< e.g. "triangle4.moeller"; empty for the default
   std::optional<Isa> isa;  ///< the kernels' variant; nothing for the best the CPU runs
   int threads = 1;         ///< threads for building and tracing (1: the calling thread only)
+  /// Bytes the structure may take when `tri` is empty: a scene whose fastest layout would need
+  /// more gets the leanest one (chapter 6). 0: half of the machine's physical memory.
+  size_t memory_budget = 0;
 };
 
 /// What was built, with the configuration resolved to full names.
 struct AccelInfo {
   std::string accel;         ///< e.g. "bvh4.objectsplit"
   std::string tri;           ///< e.g. "triangle4.moeller"
+  std::string choice;        ///< why that layout: "asked for ...", or which default rule chose it
   Isa isa = Isa::scalar;     ///< the variant that runs
   int threads = 1;           ///< threads used for building and tracing
   size_t triangles = 0;      ///< triangles in the scene (zero-area ones included)
@@ -69,6 +76,10 @@ class Accel {
   /// Builds the structure. Throws std::invalid_argument, naming the option (-accel, -tri,
   /// -isa, -threads) and listing what is supported, when the configuration is not one RTK has.
   Accel(const TriangleMesh& mesh, const AccelConfig& config = {});
+  /// Builds a structure for a scene in linear motion: `t0` holds the vertices at shutter time 0,
+  /// `t1` the same triangles with the vertices at time 1, and each ray's time picks the moment.
+  /// Chooses bvh4mb (chapter 8) unless nothing moves; see api/motion_accel.h for the rules.
+  Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& config = {});
   ~Accel();
   Accel(Accel&&) noexcept;
   Accel& operator=(Accel&&) noexcept;

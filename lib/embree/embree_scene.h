@@ -1,6 +1,7 @@
 /// \file
 /// The yardstick: Embree 3 (Debian's libembree-dev) behind the same three calls as RTK's API,
-/// so that the benchmark and `rtk-embree-trace` can trace the same rays through both.
+/// so that the benchmark, `rtk-embree-trace` and the renderer (`rtk render -kernels embree`) can
+/// trace the same rays through both.
 ///
 /// Embree is configured as a renderer would for a static scene: one triangle geometry,
 /// RTC_BUILD_QUALITY_MEDIUM (its default, an SAH build), no robust or compact flags, and a
@@ -23,7 +24,7 @@
 #include "01_base/ray.h"
 #include "01_base/triangle_mesh.h"
 
-namespace rtk::bench {
+namespace rtk {
 
 /// An Embree device and scene holding one triangle mesh.
 class EmbreeScene {
@@ -60,4 +61,4 @@ class EmbreeScene {
   int threads_ = 1;
 };
 
-}  // namespace rtk::bench
+}  // namespace rtk

@@ -6,7 +6,7 @@
 
 #include "01_base/timer.h"
 
-namespace rtk::bench {
+namespace rtk {
 
 bool EmbreeScene::monitor(void* user, ssize_t bytes, bool /*post*/) {
   static_cast<EmbreeScene*>(user)->allocated_ += int64_t(bytes);
@@ -117,4 +117,4 @@ std::string EmbreeScene::version() {
   return v;
 }
 
-}  // namespace rtk::bench
+}  // namespace rtk

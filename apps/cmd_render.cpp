@@ -1,0 +1,80 @@
+// `rtk render`: reads the guide's options (command scripts with -c, then the command line
+// itself, left to right), builds the kernels the scene needs, renders with chapter 12's path
+// tracer and writes every -o image. Also the guide's short form `rtk -c scene.ecs -o out.png`.
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "12_pathtracer/render.h"
+#include "commands.h"
+#include "image/image_io.h"
+#include "options.h"
+#include "render_kernels/accel_kernels.h"
+#include "scene/scene_script.h"
+#include "viewer.h"
+
+namespace rtk::cli {
+
+int run_render(std::span<const std::string_view> args, bool viewer_without_output) {
+  // Step 1: the scene and options, scripts and command line read left to right.
+  SceneScript script;
+  script.options.progress = true;
+  ViewerOptions viewer;  // -frames, -screenshot: the viewer's own (chapter 14)
+  const std::vector<std::string_view> script_args = take_viewer_options(args, viewer);
+  read_script_args(script_args, script, [](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); });
+  // No -o: the guide's interactive mode, the viewer (chapter 14), for `rtk -c` and `rtk view`.
+  if (script.outputs.empty() && viewer_without_output) return run_viewer(script, viewer);
+  if (script.outputs.empty())
+    throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm); "
+                     "`rtk -c SCENE.ecs` or `rtk view` without -o opens the interactive viewer");
+  if (viewer.frames > 0) throw UsageError("-frames and -screenshot belong to the viewer (no -o)");
+  for (const auto& out : script.outputs) {
+    try {
+      image_format_from_path(out.string());
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("-o: ") + e.what());
+    }
+  }
+  RenderOptions& options = script.options;
+  if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  script.accel.threads = options.threads;
+  // A static scene's configuration is checked before the build (a moving scene's is checked
+  // by the motion structure's own rules when it is built).
+  if (!script.scene.has_motion()) resolve_config(script.accel);
+
+  if (script.scene.lights.empty() && !options.eye_light)
+    std::fprintf(stderr, "rtk render: warning: the scene has no light; the image will be black "
+                         "(add one, e.g. -ambientlight 1 1 1, or use -renderer debug)\n");
+
+  // Step 2: the kernels, built for what the scene holds (the motion structure only if it moves).
+  const AccelKernels kernels(script.scene, script.accel);
+  const AccelInfo& info = kernels.info();
+  std::printf("scene: %zu triangles, %zu materials, %zu lights%s\n", script.scene.mesh.size(),
+              script.scene.materials.size(), script.scene.lights.size(),
+              script.scene.has_motion() ? ", moving" : "");
+  std::printf("kernels: accel %s, tri %s, isa %s (%s); build %.3f s, %.1f MB\n", info.accel.c_str(),
+              info.tri.c_str(), std::string(isa_name(info.isa)).c_str(), info.choice.c_str(),
+              info.build_seconds, info.bytes / 1e6);
+  std::fflush(stdout);
+
+  // Step 3: the image.
+  const Renderer renderer(script.scene, kernels, options);
+  Framebuffer framebuffer(options.width, options.height);
+  const RenderStats stats = renderer.render(framebuffer);
+  std::printf("render: %dx%d, %d spp, depth %d, %d threads, seed %u: %.3f s, %.3g samples/s, "
+              "%.3g Mrays/s, %.0f%% of thread time in ray queries\n",
+              options.width, options.height, options.spp, options.max_depth, options.threads,
+              options.seed, stats.seconds, stats.samples_per_second(), stats.rays_per_second() * 1e-6,
+              100.0 * stats.kernel_share());
+  if (framebuffer.invalid_samples() > 0)
+    std::fprintf(stderr, "rtk render: warning: %lld samples were not finite and were dropped\n",
+                 framebuffer.invalid_samples());
+  const Image image = framebuffer.resolve();
+  for (const auto& out : script.outputs) {
+    write_image(out.string(), image, script.tone);
+    std::printf("wrote %s\n", out.string().c_str());
+  }
+  return 0;
+}
+
+}  // namespace rtk::cli

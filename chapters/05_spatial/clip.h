@@ -1,0 +1,37 @@
+/// \file
+/// Exact clipping of a triangle to a box: the tight bounds of the part of a triangle that lies
+/// inside a box, which is what a reference made by a spatial split stands for (Stich, Friedrich
+/// and Dietrich, "Spatial Splits in Bounding Volume Hierarchies", HPG 2009, section 4.2).
+#pragma once
+
+#include <span>
+#include <utility>
+
+#include "01_base/box3.h"
+
+namespace rtk {
+
+/// The bounds of the part of triangle (a, b, c) inside `box` (closed): the triangle is clipped as
+/// a polygon against the box's six planes (Sutherland and Hodgman, "Reentrant polygon
+/// clipping", CACM 1974) in double precision, and the result rounded outwards to floats and
+/// kept inside `box`, so that it contains the clipped part and never leaves the box. Returns an
+/// empty box when the triangle misses the box, or when a vertex or the box is not finite.
+/// Zero-area triangles (segments, points) are clipped like any other polygon.
+Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box);
+
+/// Splits a reference to triangle (a, b, c) whose current box is `box` by the plane
+/// coordinate[axis] = pos: the bounds of the triangle's part in `box` below the plane and above
+/// it (either may be empty when the triangle only touches that side).
+std::pair<Box3f, Box3f> split_triangle_box(const Vec3f& a, const Vec3f& b, const Vec3f& c,
+                                           const Box3f& box, int axis, float pos);
+
+/// Chops the part of triangle (a, b, c) inside `box` at the planes coordinate[axis] =
+/// planes[0] < planes[1] < ... (SBVH's reference chopping, done incrementally: the polygon is
+/// clipped to the box once, then each plane splits off one piece), and extends out[i] by the
+/// bounds of the piece between planes[i - 1] and planes[i] (out holds planes.size() + 1 boxes;
+/// the first and last pieces end at the box). Each piece's bounds are rounded and kept in their
+/// slab as clip_triangle() keeps its result in its box.
+void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box, int axis,
+                   std::span<const float> planes, std::span<Box3f> out);
+
+}  // namespace rtk

@@ -1,0 +1,242 @@
+/// \file
+/// Single-ray traversal of a BVH4MB/BVH8MB: chapter 3's traversal with all its tricks, where
+/// the box test interpolates each child's planes at the ray's time and the leaves interpolate
+/// their vertices before the triangle test. Per-ISA template: include from kernel sources only.
+#pragma once
+
+#ifndef RTK_ISA
+#error "bvhmb_traverser.h belongs to kernel sources compiled once per ISA"
+#endif
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <stdexcept>
+
+#include "01_base/platform.h"
+#include "01_base/simd.h"
+#include "03_bvh4/bvhn_traverser.h"
+#include "06_layouts/leaf_intersectors.h"
+#include "08_motion/bvh4mb.h"
+
+namespace rtk::RTK_ISA {
+
+/// Tests the ray at time `time` (broadcast) against the N moving children of a node. Returns
+/// the hit mask and leaves each child's entry distance in `dist`.
+template <int N>
+RTK_INLINE uint32_t intersect_node_mb(const NodeMB<N>& node, const BvhNRay<N>& r, vfloat<N> time, vfloat<N>& dist) {
+  // [ch08-box-at-time]
+  // The motion rows sit six rows after the box rows, so the near and far offsets that chapter 3
+  // chose by the direction's signs find both: the plane at time t is row + t * row[6].
+  constexpr size_t kMotion = 6 * sizeof(float) * N;
+  const char* base = reinterpret_cast<const char*>(&node);
+  auto plane = [base, time](size_t offset) {
+    const vfloat<N> p0 = vfloat<N>::load(reinterpret_cast<const float*>(base + offset));
+    const vfloat<N> dp = vfloat<N>::load(reinterpret_cast<const float*>(base + offset + kMotion));
+    return p0 + time * dp;
+  };
+  const vfloat<N> nx = (r.org_x - plane(r.near_x)) * r.neg_rdir_x;
+  const vfloat<N> ny = (r.org_y - plane(r.near_y)) * r.neg_rdir_y;
+  const vfloat<N> nz = (r.org_z - plane(r.near_z)) * r.neg_rdir_z;
+  const vfloat<N> fx = (r.org_x - plane(r.far_x)) * r.neg_rdir_x;
+  const vfloat<N> fy = (r.org_y - plane(r.far_y)) * r.neg_rdir_y;
+  const vfloat<N> fz = (r.org_z - plane(r.far_z)) * r.neg_rdir_z;
+  // [ch08-box-at-time]
+  dist = max(max(nx, ny), max(nz, r.tnear));
+  const vfloat<N> exit = min(min(fx, fy), min(fz, r.tfar));
+  return movemask(dist <= exit);
+}
+
+/// What a motion leaf needs besides its blocks: the intersector's view of the ray, the ray's
+/// time, and the mesh's motion arrays.
+template <class Intersector, int M>
+struct MotionPrecalc {
+  typename Intersector::template Precalc<M> ray;
+  vfloat<M> time;
+  const float* motion;   ///< the motion vectors as floats, three per entry
+  const uint32_t* slot;  ///< sparse storage: each vertex's entry in `motion`; dense: null
+
+  MotionPrecalc(const Ray& r, const MotionMesh& mesh)
+      : ray(r), time(r.time), motion(reinterpret_cast<const float*>(mesh.motion.data())), slot(mesh.slot.empty() ? nullptr : mesh.slot.data()) {}
+};
+
+// [ch08-leaf]
+/// A triangle4i leaf in motion: the block's vertices at time 0 are gathered through its
+/// indices (chapter 6), their motion vectors through the same indices (dense) or through each
+/// vertex's slot (sparse), and every vertex is moved to the ray's time before Intersector tests
+/// the four triangles.
+template <MotionStorage S, class Intersector>
+struct MotionLeaf {
+  static constexpr int M = 4;
+  using Block = TriangleMi<M>;
+  using Precalc = MotionPrecalc<Intersector, M>;
+
+  /// Tests the four triangles of one block at the ray's time; the mask of lanes hit in
+  /// [tnear, tfar].
+  static RTK_INLINE vbool<M> test(const Precalc& pre, const Block& block, float tfar, TriangleHitsK<M>& h) {
+    Vec3v<M> p[3];
+    load_vertices(block, p[0], p[1], p[2]);
+    for (int k = 0; k < 3; ++k) {
+      vint<M> entry = vint<M>::load(block.v[k]);
+      if constexpr (S == MotionStorage::sparse) {
+        alignas(16) int32_t slots[M];
+        for (int i = 0; i < M; ++i) slots[i] = int32_t(pre.slot[block.v[k][i]]);
+        entry = vint<M>::load(slots);
+      }
+      const vint<M> offset = entry * vint<M>(3);
+      const vfloat<M> dx = vfloat<M>::gather(pre.motion, offset);
+      const vfloat<M> dy = vfloat<M>::gather(pre.motion, offset + vint<M>(1));
+      const vfloat<M> dz = vfloat<M>::gather(pre.motion, offset + vint<M>(2));
+      // The same two roundings per component as vertex_at().
+      p[k] = {p[k].x + pre.time * dx, p[k].y + pre.time * dy, p[k].z + pre.time * dz};
+    }
+    return Intersector::intersect(pre.ray, vfloat<M>(tfar), p[0], p[1], p[2], h);
+  }
+  // [ch08-leaf]
+
+  /// The closest hit among `count` blocks in [tnear, tfar]; lowers tfar to it.
+  static RTK_INLINE bool intersect(const Precalc& pre, const Block* blocks, uint32_t count, Hit& hit, float& tfar) {
+    bool found = false;
+    for (uint32_t b = 0; b < count; ++b) {
+      TriangleHitsK<M> h;
+      const vbool<M> valid = test(pre, blocks[b], tfar, h);
+      if (none(valid)) continue;
+      const int lane = nearest_lane(valid, h.t);
+      hit = Hit{h.t[lane], h.u[lane], h.v[lane], blocks[b].prim[lane]};
+      tfar = hit.t;
+      found = true;
+    }
+    return found;
+  }
+
+  /// Whether any of `count` blocks is hit in [tnear, tfar].
+  static RTK_INLINE bool occluded(const Precalc& pre, const Block* blocks, uint32_t count, float tfar) {
+    for (uint32_t b = 0; b < count; ++b) {
+      TriangleHitsK<M> h;
+      if (any(test(pre, blocks[b], tfar, h))) return true;
+    }
+    return false;
+  }
+};
+
+/// Traces one motion ray through a BVHMB with chapter 3's tricks (near/far planes by sign,
+/// early pop, the 1- and 2-hit paths, sorted push, cull at pop). Returns whether a hit was
+/// found (closest hit: written to `hit`) or whether anything blocks (occlusion).
+template <int N, class Leaf, bool kOcclusion>
+bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
+  const typename Leaf::Precalc pre(ray, bvh.mesh);
+  BvhNRay<N> r = make_bvhn_ray<N>(ray);
+  const vfloat<N> time(ray.time);
+  float tfar = ray.tfar;
+
+  BvhStackEntry stack[kBvhMbMaxDepth * (N - 1) + 1];
+  BvhStackEntry* sp = stack;
+  *sp++ = {kTerminal, -std::numeric_limits<float>::infinity()};
+  const std::byte* leaf_bytes = bvh.leaves.bytes.data();
+  bool found = false;
+
+  NodeRef cur = bvh.root;
+  for (;;) {
+    while (!is_leaf(cur)) {
+      const NodeMB<N>& node = bvh.node(cur);
+      const BvhStackEntry next = sp[-1];
+      vfloat<N> dist;
+      uint32_t mask = intersect_node_mb<N>(node, r, time, dist);
+      // 0 children hit: the next entry is already read (early pop).
+      if (mask == 0) {
+        --sp;
+        if (!kOcclusion && next.dist > tfar) goto pop;
+        cur = next.ref;
+        continue;
+      }
+      alignas(64) float d[N];
+      dist.store(d);
+      const int i0 = pop_lowest_bit(mask);
+      // 1 child hit.
+      if (mask == 0) {
+        cur = node.children[i0];
+        continue;
+      }
+      // 2 children hit: push the farther, go to the nearer.
+      if ((mask & (mask - 1)) == 0) {
+        const int i1 = bit_scan_forward(mask);
+        const bool swap = d[i1] < d[i0];
+        const int near = swap ? i1 : i0, far = swap ? i0 : i1;
+        *sp++ = {node.children[far], d[far]};
+        cur = node.children[near];
+        continue;
+      }
+      // More: push them all, nearest on top.
+      BvhStackEntry* const first = sp;
+      *sp++ = {node.children[i0], d[i0]};
+      while (mask != 0) {
+        const int i = pop_lowest_bit(mask);
+        *sp++ = {node.children[i], d[i]};
+      }
+      sort_pushed(first, sp);
+      --sp;
+      cur = sp->ref;
+    }
+    if (cur == kTerminal) break;
+    {
+      const auto* blocks = reinterpret_cast<const typename Leaf::Block*>(leaf_bytes + leaf_offset(cur));
+      const uint32_t count = leaf_blocks(cur);
+      if constexpr (kOcclusion) {
+        if (Leaf::occluded(pre, blocks, count, tfar)) return true;
+      } else if (Leaf::intersect(pre, blocks, count, hit, tfar)) {
+        found = true;
+        shorten(r, tfar);
+      }
+    }
+  pop:
+    --sp;
+    if constexpr (!kOcclusion)
+      while (sp->dist > tfar) --sp;
+    cur = sp->ref;
+  }
+  return found;
+}
+
+/// Calls `f.template operator()<Leaf>()` with the leaf policy of the structure's storage and
+/// intersector.
+template <int N, class F>
+void with_motion_leaf(const BVHMB<N>& bvh, F&& f) {
+  auto with_storage = [&]<class I>() {
+    if (bvh.mesh.storage == MotionStorage::sparse) return f.template operator()<MotionLeaf<MotionStorage::sparse, I>>();
+    return f.template operator()<MotionLeaf<MotionStorage::dense, I>>();
+  };
+  switch (bvh.intersector) {
+    case IntersectorKind::moeller: return with_storage.template operator()<MoellerTrumbore>();
+    case IntersectorKind::pluecker: return with_storage.template operator()<PlueckerStable>();
+    case IntersectorKind::watertight: return with_storage.template operator()<Watertight>();
+  }
+  throw std::invalid_argument("unknown intersector");
+}
+
+/// Closest hits of rays[i] into hits[i]; rays that are not motion rays miss.
+template <int N>
+void intersect_mb(const BVHMB<N>& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
+  require_same_size(rays.size(), hits.size());
+  require_layout(bvh.leaves, Triangle4iLayout::kName);
+  with_motion_leaf(bvh, [&]<class Leaf>() {
+    for (size_t i = 0; i < rays.size(); ++i) {
+      Hit hit;
+      if (is_valid_motion_ray(rays[i])) traverse_bvhmb<N, Leaf, false>(bvh, rays[i], hit);
+      hits[i] = hit;
+    }
+  });
+}
+
+/// Occlusion of rays[i] into occluded[i]; rays that are not motion rays are not occluded.
+template <int N>
+void occluded_mb(const BVHMB<N>& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+  require_same_size(rays.size(), occluded.size());
+  require_layout(bvh.leaves, Triangle4iLayout::kName);
+  with_motion_leaf(bvh, [&]<class Leaf>() {
+    Hit unused;
+    for (size_t i = 0; i < rays.size(); ++i)
+      occluded[i] = is_valid_motion_ray(rays[i]) && traverse_bvhmb<N, Leaf, true>(bvh, rays[i], unused) ? 1 : 0;
+  });
+}
+
+}  // namespace rtk::RTK_ISA

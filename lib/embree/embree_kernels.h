@@ -1,0 +1,37 @@
+/// \file
+/// The renderer on someone else's kernels: chapter 12's RayKernels implemented by Embree 3, so
+/// that `rtk render -kernels embree` runs the same path tracer, scene and camera on Embree's
+/// BVH and intersectors instead of RTK's. The renderer cannot tell the two apart; only the
+/// time and the statistics differ (and the images, within noise: see tests/render).
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "12_pathtracer/ray_kernels.h"
+#include "12_pathtracer/scene.h"
+#include "embree/embree_scene.h"
+
+namespace rtk {
+
+/// RayKernels over an EmbreeScene built from a RenderScene's mesh.
+class EmbreeKernels final : public RayKernels {
+ public:
+  /// Builds Embree's structure with `threads` build threads. Embree 3's motion blur needs a
+  /// different geometry set-up, so a scene whose vertices move is refused here with a message
+  /// that names the option (-kernels) rather than rendered without its blur.
+  EmbreeKernels(const RenderScene& scene, int threads);
+
+  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const override;
+  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const override;
+  /// "embree 3.13.5 (rtcIntersect1, medium-quality build)".
+  std::string name() const override;
+
+  /// Embree's build time in seconds.
+  double build_seconds() const { return scene_.build_seconds(); }
+
+ private:
+  EmbreeScene scene_;
+};
+
+}  // namespace rtk

@@ -1,0 +1,55 @@
+/// \file
+/// Numbers in scene files, read exactly (std::from_chars) and refused with the file and line
+/// when a token is not one.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "io/file_error.h"
+
+namespace rtk::scene_io {
+
+/// Where a token came from: a file and a line, or the command line (line 0, file
+/// "command line").
+struct Where {
+  std::string file;
+  size_t line = 0;
+};
+
+/// Throws the FileError "FILE:LINE: message".
+[[noreturn]] inline void fail(const Where& where, const std::string& message) {
+  throw FileError(where.file, where.line, message);
+}
+
+/// A finite float; `what` names the argument in the message ("-fov", "Kd").
+inline float parse_float(std::string_view token, const Where& where, std::string_view what) {
+  const char* first = token.data();
+  const char* last = first + token.size();
+  if (first != last && *first == '+') ++first;
+  float value = 0.0f;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc() || ptr != last || !std::isfinite(value))
+    fail(where, std::string(what) + ": '" + std::string(token) + "' is not a finite number");
+  return value;
+}
+
+/// An integer in [min, max].
+inline long long parse_int(std::string_view token, const Where& where, std::string_view what,
+                           long long min, long long max) {
+  const char* first = token.data();
+  const char* last = first + token.size();
+  if (first != last && *first == '+') ++first;
+  long long value = 0;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc() || ptr != last)
+    fail(where, std::string(what) + ": '" + std::string(token) + "' is not an integer");
+  if (value < min || value > max)
+    fail(where, std::string(what) + ": " + std::to_string(value) + " is not from " +
+                    std::to_string(min) + " to " + std::to_string(max));
+  return value;
+}
+
+}  // namespace rtk::scene_io

@@ -1,0 +1,350 @@
+#include "scene/scene_script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "11_lights/area_light.h"
+#include "11_lights/distant_light.h"
+#include "11_lights/environment_light.h"
+#include "11_lights/point_light.h"
+#include "io/read_file.h"
+#include "scene/obj_scene.h"
+#include "scene/parse_number.h"
+#include "scene/xml_scene.h"
+
+namespace rtk {
+
+namespace {
+
+using scene_io::fail;
+using scene_io::Where;
+
+// Scripts may include scripts; deeper than this is taken for a script that includes itself.
+constexpr int kMaxInclude = 32;
+
+struct Token {
+  std::string text;
+  Where where;
+};
+
+std::vector<Token> tokenize(std::string_view text, const std::string& file) {
+  std::vector<Token> tokens;
+  size_t line = 1;
+  for (size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      ++i;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+    } else if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else {
+      const size_t start = i;
+      while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != '#') {
+        const unsigned char u = static_cast<unsigned char>(text[i]);
+        if (u < 0x20 || u == 0x7f) fail({file, line}, "control byte in the script (binary data?)");
+        ++i;
+      }
+      tokens.push_back({std::string(text.substr(start, i - start)), {file, line}});
+    }
+  }
+  return tokens;
+}
+
+// Reads one token list (a script or the command line) into the script state.
+class ScriptReader {
+ public:
+  ScriptReader(SceneScript& script, const WarningHandler& warn, int depth)
+      : s_(script), warn_(warn), depth_(depth) {}
+
+  void run(const std::vector<Token>& tokens, const std::filesystem::path& dir) {
+    tokens_ = &tokens;
+    dir_ = dir;
+    pos_ = 0;
+    while (pos_ < tokens.size()) option();
+  }
+
+ private:
+  const Token& take(const Token& option, const char* what) {
+    if (pos_ >= tokens_->size())
+      fail(option.where, option.text + ": missing " + what + " (end of input)");
+    return (*tokens_)[pos_++];
+  }
+  float number(const Token& option) {
+    const Token& t = take(option, "a number");
+    return scene_io::parse_float(t.text, t.where, option.text);
+  }
+  Vec3f vec3(const Token& option) {
+    const float x = number(option), y = number(option);
+    return {x, y, number(option)};
+  }
+  Color color(const Token& option) {
+    const Vec3f c = vec3(option);
+    return {c.x, c.y, c.z};
+  }
+  long long integer(const Token& option, long long min, long long max) {
+    const Token& t = take(option, "an integer");
+    return scene_io::parse_int(t.text, t.where, option.text, min, max);
+  }
+  std::filesystem::path file(const Token& option) {
+    return dir_ / take(option, "a file name").text;
+  }
+  void warn(const Where& w, const std::string& message) const {
+    if (!warn_) return;
+    warn_(w.line ? w.file + ":" + std::to_string(w.line) + ": " + message : w.file + ": " + message);
+  }
+  // Runs `body`, turning the std::invalid_argument of a constructor (a light with a negative
+  // radiance, a bad configuration string) into an error at the option's place.
+  template <class Body>
+  void at(const Token& option, Body&& body) {
+    try {
+      body();
+    } catch (const FileError&) {
+      throw;
+    } catch (const std::exception& e) {
+      fail(option.where, option.text + ": " + e.what());
+    }
+  }
+  void add_area_light(const std::vector<std::shared_ptr<TriangleLight>>& lights, Color radiance) {
+    Material m;
+    m.name = "light";
+    m.prototype = Lambertian{Color(0.0f)};
+    m.emission = radiance;
+    const uint32_t material = s_.scene.add_material(std::move(m));
+    for (const auto& light : lights) s_.scene.add_triangle_light(light, material);
+  }
+
+  void include(const Token& option) {
+    const std::filesystem::path path = file(option);
+    if (depth_ + 1 >= kMaxInclude)
+      fail(option.where, "-c: scripts nested more than " + std::to_string(kMaxInclude) +
+                             " deep (does '" + path.string() + "' include itself?)");
+    std::string text;
+    try {
+      text = read_file(path);
+    } catch (const FileError& e) {
+      fail(option.where, std::string("-c: ") + e.what());
+    }
+    s_.files.push_back(path);
+    const std::vector<Token> tokens = tokenize(text, path.string());
+    ScriptReader(s_, warn_, depth_ + 1).run(tokens, path.parent_path());
+  }
+
+  void geometry(const Token& option) {
+    const std::filesystem::path path = file(option);
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext != ".obj" && ext != ".xml")
+      fail(option.where, "-i " + path.string() + ": unknown scene format (expected .obj or .xml)");
+    if (!std::filesystem::is_regular_file(path))
+      fail(option.where, "-i: cannot open '" + path.string() + "'");
+    last_first_vertex_ = s_.scene.mesh.vertices.size();
+    last_first_triangle_ = s_.scene.mesh.triangles.size();
+    if (ext == ".xml") load_xml_scene(path, s_.scene, warn_);
+    else load_obj_scene(path, s_.scene, warn_);
+    s_.files.push_back(path);
+    has_last_ = true;
+  }
+
+  // -motion FILE: the same faces as the previous -i, with the vertices at shutter time 1.
+  void motion(const Token& option) {
+    const std::filesystem::path path = file(option);
+    if (!has_last_) fail(option.where, "-motion must follow the -i of the geometry it moves");
+    if (!std::filesystem::is_regular_file(path))
+      fail(option.where, "-motion: cannot open '" + path.string() + "'");
+    RenderScene t1;
+    load_obj_scene(path, t1, {});
+    RenderScene& sc = s_.scene;
+    const size_t nv = sc.mesh.vertices.size() - last_first_vertex_;
+    const size_t nt = sc.mesh.triangles.size() - last_first_triangle_;
+    bool same = t1.mesh.vertices.size() == nv && t1.mesh.triangles.size() == nt;
+    for (size_t t = 0; same && t < nt; ++t)
+      for (int k = 0; k < 3; ++k)
+        same &= t1.mesh.triangles[t][k] + last_first_vertex_ == sc.mesh.triangles[last_first_triangle_ + t][k];
+    if (!same)
+      fail(option.where, "-motion " + path.string() + ": its faces and vertices do not match those of the previous -i");
+    if (sc.vertices_t1.empty()) sc.vertices_t1 = sc.mesh.vertices;
+    std::copy(t1.mesh.vertices.begin(), t1.mesh.vertices.end(), sc.vertices_t1.begin() + last_first_vertex_);
+    s_.files.push_back(path);
+    has_last_ = false;
+  }
+
+  // -renderer NAME [{ key = value ... }]
+  void renderer(const Token& option) {
+    const Token& name = take(option, "a renderer name");
+    if (name.text == "pathtracer" || name.text == "pt") {
+      s_.options.eye_light = false;
+    } else if (name.text == "debug") {
+      s_.options.eye_light = true;
+    } else {
+      fail(name.where, "-renderer: unknown renderer '" + name.text + "' (pathtracer, pt or debug)");
+    }
+    if (pos_ >= tokens_->size() || (*tokens_)[pos_].text != "{") return;
+    const Token& open = (*tokens_)[pos_++];
+    while (true) {
+      if (pos_ >= tokens_->size()) fail(open.where, "-renderer: '{' without its '}'");
+      const Token& key = (*tokens_)[pos_++];
+      if (key.text == "}") break;
+      if (key.text == "{") fail(key.where, "-renderer: '{' inside a parameter block");
+      const Token& eq = take(key, "'=' after the parameter name");
+      if (eq.text != "=") fail(eq.where, "-renderer: expected '=' after '" + key.text + "', found '" + eq.text + "'");
+      if (key.text == "depth" || key.text == "maxDepth") {
+        s_.options.max_depth = static_cast<int>(integer(key, 0, 1 << 16));
+      } else if (key.text == "spp") {
+        s_.options.spp = static_cast<int>(integer(key, 1, 1 << 20));
+      } else {
+        // A parameter we do not model (minContribution, backplate, ...): its value is the
+        // tokens up to the next "key =" or the closing brace.
+        warn(key.where, "-renderer: parameter '" + key.text + "' is not modelled and is ignored");
+        while (pos_ < tokens_->size() && (*tokens_)[pos_].text != "}" &&
+               !(pos_ + 1 < tokens_->size() && (*tokens_)[pos_ + 1].text == "="))
+          ++pos_;
+      }
+    }
+  }
+
+  void option() {
+    const Token& o = (*tokens_)[pos_++];
+    std::string_view name = o.text;
+    if (name.starts_with("--")) name.remove_prefix(1);
+    RenderScene& sc = s_.scene;
+    CameraParams& cam = sc.camera;
+    if (name == "-c") include(o);
+    else if (name == "-i") geometry(o);
+    else if (name == "-motion") motion(o);
+    else if (name == "-vp") cam.position = vec3(o);
+    else if (name == "-vi") cam.look_at = vec3(o);
+    else if (name == "-vd") cam.look_at = cam.position + vec3(o);
+    else if (name == "-vu") cam.up = vec3(o);
+    else if (name == "-fov" || name == "-angle") cam.fov_degrees = number(o);
+    else if (name == "-radius") cam.lens_radius = number(o);
+    else if (name == "-focaldistance") cam.focal_distance = number(o);
+    else if (name == "-size") {
+      s_.options.width = static_cast<int>(integer(o, 1, 1 << 15));
+      s_.options.height = static_cast<int>(integer(o, 1, 1 << 15));
+    } else if (name == "-spp") s_.options.spp = static_cast<int>(integer(o, 1, 1 << 20));
+    else if (name == "-depth") s_.options.max_depth = static_cast<int>(integer(o, 0, 1 << 16));
+    else if (name == "-seed") s_.options.seed = static_cast<uint32_t>(integer(o, 0, 0xFFFFFFFFll));
+    else if (name == "-threads") s_.options.threads = static_cast<int>(integer(o, 0, 1024));
+    else if (name == "-gamma") {
+      const float g = number(o);
+      if (!(g > 0.0f)) fail(o.where, "-gamma: must be above 0");
+      s_.tone.gamma = g;
+    } else if (name == "-renderer") renderer(o);
+    else if (name == "-accel") s_.accel.accel = take(o, "an acceleration structure").text;
+    else if (name == "-tri") s_.accel.tri = take(o, "a triangle layout").text;
+    else if (name == "-isa") {
+      const Token& t = take(o, "an ISA name");
+      const std::optional<Isa> isa = parse_isa(t.text);
+      if (!isa) fail(t.where, "-isa: unknown ISA '" + t.text + "' (scalar, sse4, avx2 or avx512)");
+      s_.accel.isa = isa;
+    } else if (name == "-sampler") {
+      const Token& t = take(o, "a sampler name");
+      at(t, [&] { s_.options.sampler = parse_sampler_type(t.text); });
+    } else if (name == "-filter") {
+      const Token& t = take(o, "a filter name");
+      at(t, [&] { s_.options.filter = parse_filter_type(t.text); });
+    } else if (name == "-ambientlight") {
+      const Color l = color(o);
+      at(o, [&] { sc.add_light(std::make_shared<AmbientLight>(l)); });
+    } else if (name == "-pointlight") {
+      const Vec3f p = vec3(o);
+      const Color i = color(o);
+      at(o, [&] { sc.add_light(std::make_shared<PointLight>(p, i)); });
+    } else if (name == "-directionallight" || name == "-dirlight") {
+      const Vec3f d = vec3(o);
+      const Color e = color(o);
+      at(o, [&] { sc.add_light(std::make_shared<DirectionalLight>(d, e)); });
+    } else if (name == "-distantlight") {
+      const Vec3f d = vec3(o);
+      const Color l = color(o);
+      const float angle = number(o);
+      at(o, [&] { sc.add_light(std::make_shared<DistantLight>(d, l, angle)); });
+    } else if (name == "-trianglelight" || name == "-quadlight") {
+      const Vec3f p = vec3(o), u = vec3(o), v = vec3(o);
+      const Color l = color(o);
+      at(o, [&] {
+        if (name == "-quadlight") add_area_light(make_quad_light(p, u, v, l), l);
+        else add_area_light({std::make_shared<TriangleLight>(p, p + u, p + v, l)}, l);
+      });
+    } else if (name == "-hdrilight") {
+      const Color l = color(o);
+      const std::filesystem::path path = file(o);
+      at(o, [&] { sc.add_light(std::make_shared<EnvironmentLight>(load_environment_image(path.string()), l)); });
+      s_.files.push_back(path);
+    } else if (name == "-trisphere") {
+      const Vec3f p = vec3(o);
+      const float r = number(o);
+      const int theta = static_cast<int>(integer(o, 2, 4096)), phi = static_cast<int>(integer(o, 3, 4096));
+      if (!(r > 0.0f)) fail(o.where, "-trisphere: the radius must be above 0");
+      add_sphere(p, r, theta, phi);
+    } else if (name == "-o") s_.outputs.push_back(file(o));
+    else if (name == "-vignetting" || name == "-backplate" || name == "-refine") {
+      take(o, "a value");
+      warn(o.where, o.text + " is not modelled and is ignored");
+    } else if (name == "-display" || name == "-fullscreen") {
+      warn(o.where, o.text + ": the viewer is opened by running rtk without -o");
+    } else {
+      fail(o.where, "unknown option '" + o.text + "'");
+    }
+  }
+
+  // The guide's -trisphere: a red matte sphere tessellated in latitude and longitude rings.
+  void add_sphere(Vec3f centre, float radius, int num_theta, int num_phi) {
+    RenderScene& sc = s_.scene;
+    ParameterList params;
+    params.set("reflectance", Color(1.0f, 0.0f, 0.0f));
+    const uint32_t material = sc.add_material(make_material("Matte", params));
+    const uint32_t base = static_cast<uint32_t>(sc.mesh.vertices.size());
+    for (int i = 0; i <= num_theta; ++i)
+      for (int j = 0; j < num_phi; ++j) {
+        const float theta = i * kPi / num_theta, phi = j * 2.0f * kPi / num_phi;
+        const Vec3f d{std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+        sc.mesh.vertices.push_back(centre + d * radius);
+        if (!sc.normals.empty()) sc.normals.push_back(d);
+        if (!sc.uvs.empty()) sc.uvs.push_back({float(j) / num_phi, float(i) / num_theta});
+        if (sc.has_motion()) sc.vertices_t1.push_back(centre + d * radius);
+      }
+    auto at = [&](int i, int j) { return base + static_cast<uint32_t>(i * num_phi + (j % num_phi)); };
+    auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
+      sc.mesh.triangles.push_back({a, b, c});
+      sc.triangle_material.push_back(material);
+      sc.triangle_light.push_back(kNoLight);
+    };
+    for (int i = 1; i <= num_theta; ++i)
+      for (int j = 1; j <= num_phi; ++j) {
+        if (i > 1) add(at(i, j - 1), at(i - 1, j), at(i - 1, j - 1));
+        if (i < num_theta) add(at(i, j), at(i - 1, j), at(i, j - 1));
+      }
+  }
+
+  SceneScript& s_;
+  const WarningHandler& warn_;
+  int depth_;
+  const std::vector<Token>* tokens_ = nullptr;
+  std::filesystem::path dir_;
+  size_t pos_ = 0;
+  size_t last_first_vertex_ = 0, last_first_triangle_ = 0;
+  bool has_last_ = false;
+};
+
+}  // namespace
+
+void read_script_file(const std::filesystem::path& path, SceneScript& script, const WarningHandler& warn) {
+  const std::string text = read_file(path);
+  script.files.push_back(path);
+  const std::vector<Token> tokens = tokenize(text, path.string());
+  ScriptReader(script, warn, 0).run(tokens, path.parent_path());
+}
+
+void read_script_args(std::span<const std::string_view> args, SceneScript& script, const WarningHandler& warn) {
+  std::vector<Token> tokens;
+  for (size_t i = 0; i < args.size(); ++i)
+    tokens.push_back({std::string(args[i]), {"command line, argument " + std::to_string(i + 1), 0}});
+  ScriptReader(script, warn, 0).run(tokens, {});
+}
+
+}  // namespace rtk

@@ -1,0 +1,33 @@
+/// \file
+/// The Embree scene graph in XML (FORMATS.md section 2), read into chapter 12's RenderScene.
+///
+/// Read: `<scene>`, `<Group>`, `<Transform>` (its first child an `<AffineSpace>`: a body of 12
+/// numbers, a 3x4 row-major matrix whose last column is the translation, or one of the
+/// attributes translate, scale, rotate_x, rotate_y, rotate_z, rotate + axis), `<TriangleMesh>`
+/// (positions, optional motions (p(t) = p + t m), normals, texcoords, triangles, material),
+/// `<Sphere>` (position, radius, numTheta, numPhi, optional motion, material; tessellated as
+/// chapter 13's tessellate_sphere), lights (`<PointLight>`, `<SpotLight>` approximated by a
+/// point light, `<DirectionalLight>`, `<DistantLight>`, `<AmbientLight>`, `<TriangleLight>`,
+/// `<QuadLight>`, `<HDRILight>`), materials (`<material>` with `<code>` and `<parameters>`,
+/// made by chapter 10's make_material, which warns about what it approximates), reuse
+/// (`<assign type="material|scene" id>`, `<material id/>`, `<ref id/>`), inclusion (`<obj
+/// src>`, `<xml src>`, `<extern src>`, `<material file>`), and binary arrays (`ofs`, `size`)
+/// from the side file (`scene.bin`, then `scene.xml.bin`). The 2.x cameras are ignored with a
+/// warning (the script's -vp and friends place the camera), other unknown elements are skipped
+/// with a warning.
+#pragma once
+
+#include <filesystem>
+
+#include "10_materials/material.h"
+#include "12_pathtracer/scene.h"
+
+namespace rtk {
+
+/// Appends the geometry, materials and lights of an XML scene to `scene`. Throws FileError
+/// "FILE:LINE: message" for malformed XML, a malformed or missing value, an index out of
+/// range, a binary array outside its side file, or a file that cannot be read; warnings go to
+/// `warn`.
+void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn = {});
+
+}  // namespace rtk

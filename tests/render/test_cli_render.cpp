@@ -1,0 +1,77 @@
+// `rtk render` end to end: the image file it writes, its refusals and exit codes.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "image/image_io.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string output;
+};
+
+Result run_rtk(const std::string& args) {
+  const std::string command = std::string(RTK_BINARY) + " " + args + " 2>&1";
+  Result result;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+const std::string kCornell = std::string(RTK_SOURCE_DIR) + "/scenes/cornell_box/cornell_box.ecs";
+
+}  // namespace
+
+TEST_CASE("ch12: rtk render writes a PNG of the size asked for") {
+  const fs::path out = fs::temp_directory_path() / ("rtk_render_cli_" + std::to_string(getpid()) + ".png");
+  const Result r = run_rtk("render -c " + kCornell + " -size 24 16 -spp 2 -threads 2 -o " + out.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK(r.output.find("accel") != std::string::npos);
+  CHECK(r.output.find("Mrays/s") != std::string::npos);
+  const rtk::Image image = rtk::read_image(out.string());
+  CHECK(image.width == 24);
+  CHECK(image.height == 16);
+  double sum = 0;
+  for (const auto& c : image.pixels) sum += c.r + c.g + c.b;
+  CHECK(sum > 0.0);
+  fs::remove(out);
+  // The guide's short form, without the command's name.
+  const Result s = run_rtk("-c " + kCornell + " -size 8 8 -spp 1 -o " + out.string());
+  INFO(s.output);
+  CHECK(s.status == 0);
+  CHECK(fs::exists(out));
+  fs::remove(out);
+}
+
+TEST_CASE("ch12: rtk render refuses what it cannot do, with exit status 2") {
+  const Result no_output = run_rtk("render -c " + kCornell + " -size 8 8");
+  CHECK(no_output.status == 2);
+  CHECK(no_output.output.find("-o") != std::string::npos);
+  const Result bad_ext = run_rtk("render -c " + kCornell + " -o image.gif");
+  CHECK(bad_ext.status == 2);
+  const Result bad_accel = run_rtk("render -c " + kCornell + " -accel bvh7 -o x.png");
+  CHECK(bad_accel.status == 2);
+  CHECK(bad_accel.output.find("-accel") != std::string::npos);
+  const fs::path script = fs::temp_directory_path() / ("rtk_render_bad_" + std::to_string(getpid()) + ".ecs");
+  std::ofstream(script) << "-size 8 8\n-spp two\n";
+  const Result bad_line = run_rtk("render -c " + script.string() + " -o x.png");
+  CHECK(bad_line.status == 2);
+  CHECK(bad_line.output.find(script.filename().string() + ":2:") != std::string::npos);
+  fs::remove(script);
+}
