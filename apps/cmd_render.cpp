@@ -9,7 +9,7 @@
 #include "commands.h"
 #include "image/image_io.h"
 #include "options.h"
-#include "render_kernels/accel_kernels.h"
+#include "render_kernels/choose_kernels.h"
 #include "scene/scene_script.h"
 #include "viewer.h"
 
@@ -38,27 +38,25 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   RenderOptions& options = script.options;
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   script.accel.threads = options.threads;
-  // A static scene's configuration is checked before the build (a moving scene's is checked
-  // by the motion structure's own rules when it is built).
-  if (!script.scene.has_motion()) resolve_config(script.accel);
+  // A static scene's configuration for RTK's kernels is checked before the build (a moving
+  // scene's is checked by the motion structure's own rules when it is built).
+  if (script.kernels == "rtk" && !script.scene.has_motion()) resolve_config(script.accel);
 
   if (script.scene.lights.empty() && !options.eye_light)
     std::fprintf(stderr, "rtk render: warning: the scene has no light; the image will be black "
                          "(add one, e.g. -ambientlight 1 1 1, or use -renderer debug)\n");
 
-  // Step 2: the kernels, built for what the scene holds (the motion structure only if it moves).
-  const AccelKernels kernels(script.scene, script.accel);
-  const AccelInfo& info = kernels.info();
+  // Step 2: the kernels (-kernels rtk|embree), built for what the scene holds: RTK's builds the
+  // motion structure only if the scene moves.
+  const RenderKernels kernels = make_render_kernels(script.scene, script.accel, script.kernels);
   std::printf("scene: %zu triangles, %zu materials, %zu lights%s\n", script.scene.mesh.size(),
               script.scene.materials.size(), script.scene.lights.size(),
               script.scene.has_motion() ? ", moving" : "");
-  std::printf("kernels: accel %s, tri %s, isa %s (%s); build %.3f s, %.1f MB\n", info.accel.c_str(),
-              info.tri.c_str(), std::string(isa_name(info.isa)).c_str(), info.choice.c_str(),
-              info.build_seconds, info.bytes / 1e6);
+  std::printf("kernels: %s\n", kernels.summary.c_str());
   std::fflush(stdout);
 
   // Step 3: the image.
-  const Renderer renderer(script.scene, kernels, options);
+  const Renderer renderer(script.scene, *kernels.kernels, options);
   Framebuffer framebuffer(options.width, options.height);
   const RenderStats stats = renderer.render(framebuffer);
   std::printf("render: %dx%d, %d spp, depth %d, %d threads, seed %u: %.3f s, %.3g samples/s, "

@@ -19,7 +19,7 @@
 #include "14_viewer/orbit_camera.h"
 #include "image/image_io.h"
 #include "options.h"
-#include "render_kernels/accel_kernels.h"
+#include "render_kernels/choose_kernels.h"
 
 namespace rtk::cli {
 
@@ -256,9 +256,10 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   options.progress = false;
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   script.accel.threads = options.threads;
-  if (!script.scene.has_motion()) resolve_config(script.accel);
-  const AccelKernels kernels(script.scene, script.accel);
-  std::printf("scene: %zu triangles; kernels: %s\n", script.scene.mesh.size(), kernels.name().c_str());
+  if (script.kernels == "rtk" && !script.scene.has_motion()) resolve_config(script.accel);
+  const RenderKernels chosen = make_render_kernels(script.scene, script.accel, script.kernels);
+  const RayKernels& kernels = *chosen.kernels;
+  std::printf("scene: %zu triangles; kernels: %s\n", script.scene.mesh.size(), chosen.summary.c_str());
   std::fflush(stdout);
 
   // Step 3: the window, at the scene's image size; an OpenGL 2.1 context is all it needs

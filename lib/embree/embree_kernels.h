@@ -29,6 +29,8 @@ class EmbreeKernels final : public RayKernels {
 
   /// Embree's build time in seconds.
   double build_seconds() const { return scene_.build_seconds(); }
+  /// What Embree's scene holds: its BVH and the vertex and index buffers, in bytes.
+  size_t total_bytes() const { return scene_.total_bytes(); }
 
  private:
   EmbreeScene scene_;

@@ -241,6 +241,10 @@ class ScriptReader {
       const std::optional<Isa> isa = parse_isa(t.text);
       if (!isa) fail(t.where, "-isa: unknown ISA '" + t.text + "' (scalar, sse4, avx2 or avx512)");
       s_.accel.isa = isa;
+    } else if (name == "-kernels") {
+      const Token& t = take(o, "kernels (rtk or embree)");
+      if (t.text != "rtk" && t.text != "embree") fail(t.where, "-kernels: unknown kernels '" + t.text + "' (rtk or embree)");
+      s_.kernels = t.text;
     } else if (name == "-sampler") {
       const Token& t = take(o, "a sampler name");
       at(t, [&] { s_.options.sampler = parse_sampler_type(t.text); });

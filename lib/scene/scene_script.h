@@ -4,11 +4,12 @@
 /// command line of `rtk render` is read by the same parser, so that anything a script says,
 /// the command line can say after it (and override).
 ///
-/// Options (as in Embree 1.1's viewer, plus RTK's -motion, -isa, -seed, -sampler, -filter,
-/// -focaldistance): -c FILE, -i FILE (.obj with its .mtl, or .xml: scene/xml_scene.h),
+/// Options (as in Embree 1.1's viewer, plus RTK's -motion, -isa, -kernels, -seed, -sampler,
+/// -filter, -focaldistance): -c FILE, -i FILE (.obj with its .mtl, or .xml: scene/xml_scene.h),
 /// -motion FILE (the previous -i at shutter time 1), -vp/-vi/-vu/-vd x y z, -fov/-angle deg,
 /// -radius r, -focaldistance d, -size w h, -spp n, -depth n, -gamma g, -renderer NAME
-/// [{ key = value ... }] (pathtracer/pt with depth, spp; debug), -accel, -tri, -isa, -threads n,
+/// [{ key = value ... }] (pathtracer/pt with depth, spp; debug), -accel, -tri, -isa,
+/// -kernels rtk|embree, -threads n,
 /// -seed n, -ambientlight r g b, -pointlight p I, -directionallight/-dirlight d E,
 /// -distantlight d L halfAngle, -trianglelight P U V L, -quadlight P U V L, -hdrilight r g b
 /// FILE, -trisphere p r numTheta numPhi, -o FILE. -vignetting, -backplate, -display,
@@ -36,6 +37,7 @@ struct SceneScript {
   RenderOptions options;                     ///< size, spp, depth, seed, threads, renderer
   ToneMap tone;                              ///< -gamma
   AccelConfig accel;                         ///< -accel, -tri, -isa (threads: options.threads)
+  std::string kernels = "rtk";               ///< -kernels rtk|embree: who traces the rays
   std::vector<std::filesystem::path> outputs;  ///< every -o, in order
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
 };

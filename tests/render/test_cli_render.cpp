@@ -74,4 +74,13 @@ TEST_CASE("ch12: rtk render refuses what it cannot do, with exit status 2") {
   CHECK(bad_line.status == 2);
   CHECK(bad_line.output.find(script.filename().string() + ":2:") != std::string::npos);
   fs::remove(script);
+  const Result bad_kernels = run_rtk("render -c " + kCornell + " -kernels optix -o x.png");
+  CHECK(bad_kernels.status == 2);
+  CHECK(bad_kernels.output.find("-kernels: unknown kernels 'optix' (rtk or embree)") != std::string::npos);
+#if !RTK_WITH_EMBREE
+  // A build without Embree says how to get one, instead of rendering on RTK's kernels unasked.
+  const Result no_embree = run_rtk("render -c " + kCornell + " -kernels embree -size 8 8 -o x.png");
+  CHECK(no_embree.status == 2);
+  CHECK(no_embree.output.find("libembree-dev") != std::string::npos);
+#endif
 }
