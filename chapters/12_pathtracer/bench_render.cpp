@@ -4,16 +4,10 @@
 // Run: RTK_SCENES=<shared/scenes> build/chapters/12_pathtracer/ch12_bench
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <memory>
-
 #include "01_base/cpu_features.h"
-#include "11_lights/distant_light.h"
 #include "12_pathtracer/render.h"
 #include "render_kernels/accel_kernels.h"
-#include "scene/obj_scene.h"
-#include "scene/scene_script.h"
+#include "render_scenes.h"
 
 using namespace rtk;
 
@@ -44,11 +38,7 @@ void BM_cornell_box(benchmark::State& state) {
     state.SkipWithError("ISA not supported by this CPU");
     return;
   }
-  static const SceneScript script = [] {
-    SceneScript s;
-    read_script_file(std::filesystem::path(RTK_SOURCE_DIR) / "scenes/cornell_box/cornell_box.ecs", s);
-    return s;
-  }();
+  const SceneScript& script = bench::cornell_box_script();
   RenderOptions options = script.options;
   options.width = options.height = 128;
   options.spp = 4;
@@ -64,32 +54,15 @@ BENCHMARK(BM_cornell_box)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The Stanford bunny (69,451 triangles), white matte under a uniform sky, which makes every
+// The Stanford bunny (69,451 triangles), grey matte under a uniform sky, which makes every
 // path bounce in its folds; 128 x 128, 2 samples per pixel per iteration, one thread.
 void BM_bunny(benchmark::State& state) {
-  const char* root = std::getenv("RTK_SCENES");
-  const std::filesystem::path path =
-      std::filesystem::path(root ? root : "") / "bunny_stanford_full/stanford-bunny.obj";
-  if (!root || !std::filesystem::exists(path)) {
+  const auto path = bench::shared_scene("bunny_stanford_full/stanford-bunny.obj");
+  if (!path) {
     state.SkipWithError("set RTK_SCENES to the shared scenes folder to render the bunny");
     return;
   }
-  static const RenderScene scene = [&] {
-    RenderScene s;
-    load_obj_scene(path, s);
-    Material white;
-    white.prototype = Lambertian{Color(0.8f)};
-    const uint32_t m = s.add_material(white);
-    for (auto& t : s.triangle_material) t = m;
-    s.add_light(std::make_shared<AmbientLight>(Color(1.0f)));
-    const Box3f box = s.mesh.bounds();
-    const Vec3f centre = (box.lower + box.upper) * 0.5f;
-    const float size = length(box.upper - box.lower);
-    s.camera.look_at = centre;
-    s.camera.position = centre + Vec3f(0.0f, 0.2f, -1.2f) * size;
-    s.camera.fov_degrees = 40.0f;
-    return s;
-  }();
+  static const RenderScene scene = bench::grey_mesh_under_sky(*path, {0.0f, 0.2f, -1.2f});
   RenderOptions options;
   options.width = options.height = 128;
   options.spp = 2;
