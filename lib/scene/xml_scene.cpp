@@ -180,11 +180,7 @@ class XmlReader {
              name == "AmbientLight" || name == "TriangleLight" || name == "QuadLight" || name == "HDRILight")
       light(n, xfm);
     else if (name == "assign") assign(n);
-    else if (name == "ref") {
-      auto it = scenes_.find(n.attribute("id").as_string());
-      if (it == scenes_.end()) fail(n, std::string("<ref>: no scene assigned with id '") + n.attribute("id").as_string() + "'");
-      node(it->second, xfm);
-    } else if (name == "obj" || name == "xml" || name == "extern") include(n, xfm);
+    else if (name == "ref") ref(n, xfm); else if (name == "obj" || name == "xml" || name == "extern") include(n, xfm);
     else if (name == "PerspectiveCamera") {
       if (!camera_warned_) warn(n, "<PerspectiveCamera> is ignored: the script's -vp, -vi, -vu and -fov place the camera");
       camera_warned_ = true;
@@ -192,6 +188,23 @@ class XmlReader {
       skipped_.insert(name);
       warn(n, "<" + name + "> is not supported and is skipped");
     }
+  }
+
+  // A <ref> names the scene assigned to its id *before* the scene it appears in: Embree's
+  // loaders resolve references as they parse, so a file may reassign an id to a scene that
+  // refers to the id's previous meaning (cornell_box_4 made of four copies of cornell_box_4).
+  // Resolving only earlier assignments also means that references can never form a cycle.
+  void ref(const pugi::xml_node& n, const Affine& xfm) {
+    const std::string id = n.attribute("id").as_string();
+    const Assigned* target = nullptr;
+    if (auto it = scenes_.find(id); it != scenes_.end())
+      for (const Assigned& a : it->second)
+        if (a.order < scope_) target = &a;
+    if (!target) fail(n, "<ref>: no scene assigned with id '" + id + "' before this point");
+    const size_t outer = scope_;
+    scope_ = target->order;
+    node(target->node, xfm);
+    scope_ = outer;
   }
 
   void transform(const pugi::xml_node& n, const Affine& xfm) {
@@ -309,7 +322,7 @@ class XmlReader {
       for (pugi::xml_node c : n.children())
         if (c.type() == pugi::node_element) { first = c; break; }
       if (!first) fail(n, "<assign type=\"scene\">: empty");
-      scenes_[id] = first;
+      scenes_[id].push_back({first, assignments_++});
     } else {
       fail(n, "<assign>: unknown type '" + type + "' (material, scene)");
     }
@@ -484,7 +497,14 @@ class XmlReader {
   pugi::xml_document doc_;
   mutable std::optional<std::string> bin_;
   std::map<std::string, uint32_t> materials_;
-  std::map<std::string, pugi::xml_node> scenes_;
+  struct Assigned {
+    pugi::xml_node node;
+    size_t order;  // the how-manieth scene assignment of the file
+  };
+  std::map<std::string, std::vector<Assigned>> scenes_;  // every assignment of each id, in order
+  size_t assignments_ = 0;
+  size_t scope_ = SIZE_MAX;  // references see the assignments made before this one
+
   std::optional<uint32_t> default_material_;
   std::set<std::string> skipped_;
   bool camera_warned_ = false;
