@@ -24,6 +24,17 @@ RTK_INLINE int pop_lowest_bit(uint32_t& mask) {
   return index;
 }
 
+/// Index of the highest set bit, which is cleared from the mask; the mask must not be zero.
+RTK_INLINE int pop_highest_bit(uint32_t& mask) {
+  const int index = 31 - std::countl_zero(mask);
+  mask &= ~(uint32_t(1) << index);
+  return index;
+}
+
+/// Asks the cache for the line holding `address`, to be read soon (`prefetcht0`). A hint only:
+/// it never faults and changes no result, so every ISA may use it.
+RTK_INLINE void prefetch_l1(const void* address) { __builtin_prefetch(address, 0, 3); }
+
 /// Number of set bits.
 RTK_INLINE int pop_count(uint32_t mask) { return std::popcount(mask); }
 

@@ -91,18 +91,25 @@ void bm_trace(benchmark::State& state, bench::SceneSource scene, Isa isa, bool d
 // with all tricks; above 1 means the missing trick was worth that much) survives a shared,
 // noisy machine.
 template <int N>
-void bm_ablation(benchmark::State& state, bench::SceneSource scene, Isa isa, bool diffuse, NamedTricks config) {
+void bm_ablation(benchmark::State& state, bench::SceneSource scene, Isa isa, bool diffuse, bool occlusion,
+                 NamedTricks config) {
   const Prepared<N>& p = prepare<N>(scene);
   const std::vector<Ray>& rays = diffuse ? p.diffuse : p.primary;
   std::vector<Hit> hits(rays.size());
+  std::vector<uint8_t> occ(rays.size());
+  auto run = [&](const Tricks& tricks, TraversalStats* stats) {
+    if (occlusion) occluded(isa, p.bvh, tricks, rays, occ, stats);
+    else intersect(isa, p.bvh, tricks, rays, hits, stats);
+  };
   double config_seconds = 0, all_seconds = 0;
   for (auto _ : state) {
     const double t0 = thread_seconds();
-    intersect(isa, p.bvh, Tricks{}, rays, hits);
+    run(Tricks{}, nullptr);
     const double t1 = thread_seconds();
-    intersect(isa, p.bvh, config.tricks, rays, hits);
+    run(config.tricks, nullptr);
     const double t2 = thread_seconds();
     benchmark::DoNotOptimize(hits.data());
+    benchmark::DoNotOptimize(occ.data());
     all_seconds += t1 - t0;
     const double seconds = t2 - t1;
     config_seconds += seconds;
@@ -112,7 +119,7 @@ void bm_ablation(benchmark::State& state, bench::SceneSource scene, Isa isa, boo
   state.counters["mrays_per_s"] = double(state.iterations()) * double(rays.size()) / config_seconds * 1e-6;
   state.counters["vs_all"] = config_seconds / all_seconds;
   TraversalStats stats;
-  intersect(isa, p.bvh, config.tricks, rays, hits, &stats);
+  run(config.tricks, &stats);
   add_stats_counters(state, stats, N);
 }
 // [ch03-bench-ablation]
@@ -131,11 +138,15 @@ void register_width(const bench::SceneSource& scene, Isa isa) {
 
 template <int N>
 void register_ablation(const bench::SceneSource& scene, Isa isa) {
-  for (const char* kind : {"primary", "diffuse"})
+  // Closest hits of primary and diffuse rays, and occlusion of the diffuse rays (which leave a
+  // surface, as shadow rays do).
+  for (const char* kind : {"primary", "diffuse", "diffuse-occluded"})
     for (const NamedTricks& config : kTrickConfigs) {
       const std::string name = "ablation/bvh" + std::to_string(N) + "-" + std::string(isa_name(isa)) + "/" +
                                scene.name + "/" + kind + "/" + std::string(config.name);
-      benchmark::RegisterBenchmark(name.c_str(), bm_ablation<N>, scene, isa, std::string(kind) == "diffuse", config)
+      const std::string_view k = kind;
+      benchmark::RegisterBenchmark(name.c_str(), bm_ablation<N>, scene, isa, k != "primary",
+                                   k == "diffuse-occluded", config)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);
     }

@@ -101,6 +101,20 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
   // [ch03-box-combine]
 }
 
+// [ch03-prefetch]
+/// Starts loading the node or leaf that `ref` names: all the lines of an inner node (a Node8 is
+/// four), the first line of a leaf's blocks.
+template <int N>
+RTK_INLINE void prefetch_child(const BVHN<N>& bvh, const std::byte* leaf_bytes, NodeRef ref) {
+  if (!is_leaf(ref)) {
+    const char* node = reinterpret_cast<const char*>(&bvh.node(ref));
+    for (size_t line = 0; line < sizeof(NodeN<N>); line += 64) prefetch_l1(node + line);
+  } else {
+    prefetch_l1(leaf_bytes + leaf_offset(ref));  // the empty leaf too: a hint never faults
+  }
+}
+// [ch03-prefetch]
+
 /// One traversal stack entry: a node to visit and its entry distance when it was pushed.
 struct BvhStackEntry {
   NodeRef ref;
@@ -176,6 +190,22 @@ bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kS
           goto pop;
         }
       }
+      if constexpr (T.prefetch_children) {
+        for (int i : set_bits(mask)) prefetch_child(bvh, leaf_bytes, node.children[i]);
+      }
+      // [ch03-stored-order]
+      // A shadow ray: the first hit child in stored order next, the others pushed so that they
+      // pop in stored order too (the highest slot deepest). No distances: nothing is culled.
+      if constexpr (kOcclusion && T.shadow_rays_in_stored_order) {
+        const int first = pop_lowest_bit(mask);
+        while (mask != 0) {
+          const int i = pop_highest_bit(mask);
+          *sp++ = {node.children[i], 0.0f};
+        }
+        cur = node.children[first];
+        continue;
+      }
+      // [ch03-stored-order]
       alignas(64) float d[N];
       dist.store(d);
       const int i0 = pop_lowest_bit(mask);

@@ -30,6 +30,15 @@ struct Tricks {
   /// With more than two children hit, push them all and sort the pushed entries by distance,
   /// closest on top; without it they are popped in the order of the node's slots.
   bool sorted_push = true;
+  /// Ask the cache for each child node as soon as the ray is known to enter it, so that the
+  /// node's lines are on their way while the ray finishes the current node or the ones before
+  /// it on the stack (Embree's kernels do the same).
+  bool prefetch_children = true;
+  /// Shadow rays (occlusion) visit the hit children in the order the builder stored them
+  /// (chapter 4 puts the likely blockers first) and keep no distances: any hit ends the ray,
+  /// so the nearest child is not worth sorting for. Without it, shadow rays visit nearest first
+  /// like closest-hit rays.
+  bool shadow_rays_in_stored_order = true;
 
   constexpr bool operator==(const Tricks&) const = default;
 };
@@ -42,7 +51,7 @@ struct NamedTricks {
 };
 
 /// The configurations the kernels are compiled for: all tricks on, each one off alone, and all
-/// off (not all 2^6 combinations: the ablation asks what each trick adds to the others).
+/// off (not all 2^8 combinations: the ablation asks what each trick adds to the others).
 inline constexpr NamedTricks kTrickConfigs[] = {
     {"all", Tricks{}},
     {"no_near_far", Tricks{.near_far_by_sign = false}},
@@ -51,7 +60,9 @@ inline constexpr NamedTricks kTrickConfigs[] = {
     {"no_two_hit", Tricks{.two_hit_path = false}},
     {"no_cull_at_pop", Tricks{.cull_at_pop = false}},
     {"no_sorted_push", Tricks{.sorted_push = false}},
-    {"none", Tricks{false, false, false, false, false, false}},
+    {"no_prefetch", Tricks{.prefetch_children = false}},
+    {"no_stored_order", Tricks{.shadow_rays_in_stored_order = false}},
+    {"none", Tricks{false, false, false, false, false, false, false, false}},
 };
 inline constexpr size_t kTrickConfigCount = sizeof(kTrickConfigs) / sizeof(kTrickConfigs[0]);
 
