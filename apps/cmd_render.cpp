@@ -1,12 +1,14 @@
 // `rtk render`: reads the guide's options (command scripts with -c, then the command line
-// itself, left to right), builds the kernels the scene needs, renders with chapter 12's path
-// tracer and writes every -o image. Also the guide's short form `rtk -c scene.ecs -o out.png`.
+// itself, left to right), hands the scene to chapter 13's device, which builds the kernels the
+// scene needs, renders a frame with chapter 12's path tracer and writes every -o image. Also
+// the guide's short form `rtk -c scene.ecs -o out.png`.
 #include <cstdio>
 #include <string>
 #include <thread>
 
-#include "12_pathtracer/render.h"
+#include "13_device/device.h"
 #include "commands.h"
+#include "device_objects.h"
 #include "image/image_io.h"
 #include "options.h"
 #include "render_kernels/choose_kernels.h"
@@ -46,30 +48,33 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
     std::fprintf(stderr, "rtk render: warning: the scene has no light; the image will be black "
                          "(add one, e.g. -ambientlight 1 1 1, or use -renderer debug)\n");
 
-  // Step 2: the kernels (-kernels rtk|embree), built for what the scene holds: RTK's builds the
-  // motion structure only if the scene moves.
-  const RenderKernels kernels = make_render_kernels(script.scene, script.accel, script.kernels);
+  // Step 2: the device (chapter 13), whose scenes are traced by the kernels -kernels names,
+  // and the script's scene imported into it: the commit builds what the scene needs (RTK's
+  // motion structure only if it moves).
+  Device device([](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); },
+                kernel_factory(script.kernels));
+  const Handle scene = commit_scene(device, script, options.threads);
   std::printf("scene: %zu triangles, %zu materials, %zu lights%s\n", script.scene.mesh.size(),
               script.scene.materials.size(), script.scene.lights.size(),
               script.scene.has_motion() ? ", moving" : "");
-  std::printf("kernels: %s\n", kernels.summary.c_str());
+  std::printf("kernels: %s\n", device.kernels_summary(scene).c_str());
   std::fflush(stdout);
 
-  // Step 3: the image.
-  const Renderer renderer(script.scene, *kernels.kernels, options);
-  Framebuffer framebuffer(options.width, options.height);
-  const RenderStats stats = renderer.render(framebuffer);
+  // Step 3: the camera, the renderer and the framebuffer as device objects, and the frame.
+  const Handle camera = commit_camera(device, script.scene.camera);
+  const Handle renderer = commit_renderer(device, options);
+  const Handle framebuffer = commit_framebuffer(device, options.width, options.height);
+  const RenderStats stats = device.render_frame(renderer, camera, scene, framebuffer);
   std::printf("render: %dx%d, %d spp, depth %d, %d threads, seed %u: %.3f s, %.3g samples/s, "
               "%.3g Mrays/s, %.0f%% of thread time in ray queries\n",
               options.width, options.height, options.spp, options.max_depth, options.threads,
               options.seed, stats.seconds, stats.samples_per_second(), stats.rays_per_second() * 1e-6,
               100.0 * stats.kernel_share());
-  if (framebuffer.invalid_samples() > 0)
-    std::fprintf(stderr, "rtk render: warning: %lld samples were not finite and were dropped\n",
-                 framebuffer.invalid_samples());
-  const Image image = framebuffer.resolve();
+  if (stats.invalid_samples > 0)
+    std::fprintf(stderr, "rtk render: warning: %llu samples were not finite and were dropped\n",
+                 static_cast<unsigned long long>(stats.invalid_samples));
   for (const auto& out : script.outputs) {
-    write_image(out.string(), image, script.tone);
+    device.write_image(framebuffer, out.string(), script.tone);
     std::printf("wrote %s\n", out.string().c_str());
   }
   return 0;

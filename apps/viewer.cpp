@@ -1,7 +1,8 @@
 // The interactive viewer: a GLFW window, the renderer's framebuffer as an OpenGL texture, and
 // the guide's controls (section 2.3) mapped onto chapter 14's OrbitCamera. One thread drives
-// the window; each frame it asks chapter 12's renderer (whose tiles run on oneTBB's workers)
-// for one more sample per pixel, so the window answers the mouse between any two passes.
+// the window; each frame it asks chapter 13's device (chapter 12's renderer, whose tiles run on
+// oneTBB's workers) for one more sample per pixel, so the window answers the mouse between any
+// two passes. A gesture commits a new camera version; the scene is committed once.
 #include "viewer.h"
 
 #include <GLFW/glfw3.h>
@@ -16,7 +17,9 @@
 #include <thread>
 
 #include "12_pathtracer/render.h"
+#include "13_device/device.h"
 #include "14_viewer/orbit_camera.h"
+#include "device_objects.h"
 #include "image/image_io.h"
 #include "options.h"
 #include "render_kernels/choose_kernels.h"
@@ -154,9 +157,8 @@ struct GlfwSession {
   GlfwSession& operator=(const GlfwSession&) = delete;
 };
 
-// The tone-mapped framebuffer, 8 bits per channel, rows from the top.
-void tonemap_rgb8(const Framebuffer& framebuffer, const ToneMap& tone, std::vector<uint8_t>& rgb) {
-  const Image image = framebuffer.resolve();
+// The tone-mapped image, 8 bits per channel, rows from the top.
+void tonemap_rgb8(const Image& image, const ToneMap& tone, std::vector<uint8_t>& rgb) {
   rgb.resize(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     const Color& c = image.pixels[i];
@@ -251,15 +253,18 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
                                          "no display (DISPLAY is not set); ") + kHowToRender);
   GlfwSession glfw;
 
-  // Step 2: the kernels and the renderer's options, as `rtk render` makes them.
+  // Step 2: the device, the scene and the renderer, as `rtk render` makes them. The camera
+  // and the framebuffer change while the window is open: new versions are committed then.
   RenderOptions options = script.options;
   options.progress = false;
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  script.accel.threads = options.threads;
   if (script.kernels == "rtk" && !script.scene.has_motion()) resolve_config(script.accel);
-  const RenderKernels chosen = make_render_kernels(script.scene, script.accel, script.kernels);
-  const RayKernels& kernels = *chosen.kernels;
-  std::printf("scene: %zu triangles; kernels: %s\n", script.scene.mesh.size(), chosen.summary.c_str());
+  Device device([](const std::string& w) { std::fprintf(stderr, "rtk view: warning: %s\n", w.c_str()); },
+                kernel_factory(script.kernels));
+  const Handle scene = commit_scene(device, script, options.threads);
+  const Handle renderer = commit_renderer(device, options);
+  const std::shared_ptr<const RayKernels> kernels = device.kernels(scene);  // for picking
+  std::printf("scene: %zu triangles; kernels: %s\n", script.scene.mesh.size(), device.kernels_summary(scene).c_str());
   std::fflush(stdout);
 
   // Step 3: the window, at the scene's image size; an OpenGL 2.1 context is all it needs
@@ -273,7 +278,7 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   glfwSwapInterval(0);  // the renderer, not the display, sets the pace
   ViewerState state;
   state.camera = OrbitCamera::from_params(script.scene.camera);
-  state.kernels = &kernels;
+  state.kernels = kernels.get();
   glfwSetWindowUserPointer(window, &state);
   glfwSetMouseButtonCallback(window, on_mouse_button);
   glfwSetCursorPosCallback(window, on_cursor);
@@ -284,10 +289,13 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 
-  // Step 4: the loop. A moved camera or a resized window makes a new renderer and empties
-  // the framebuffer; a still one adds sample `spp` of every pixel, one pass per frame.
-  std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<Framebuffer> framebuffer;
+  // Step 4: the loop. A moved camera commits a new camera version, a resized window (or the
+  // preview's smaller size) a new framebuffer, and either empties the framebuffer (committing
+  // a framebuffer makes a new, empty buffer); a still camera adds sample `spp` of every pixel,
+  // one pass per frame.
+  Handle camera = device.new_camera("thinlens");  // a lens radius of 0 is a pinhole
+  Handle framebuffer = device.new_framebuffer();
+  int fb_width = 0, fb_height = 0;
   std::vector<uint8_t> rgb;
   uint32_t spp = 0;
   int frames = 0;
@@ -309,26 +317,28 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
     const bool preview = state.drag_button >= 0;
     const int scale = preview ? kPreviewScale : 1;
     const int render_width = (width + scale - 1) / scale, render_height = (height + scale - 1) / scale;
-    bool restart = state.moved || !state.refine;
-    if (!framebuffer || framebuffer->width() != render_width || framebuffer->height() != render_height) {
-      options.width = render_width;
-      options.height = render_height;
-      framebuffer = std::make_unique<Framebuffer>(render_width, render_height);
-      renderer.reset();
-      restart = true;
+    const bool resized = render_width != fb_width || render_height != fb_height;
+    if (state.moved || resized) {
+      const CameraParams params = state.camera.to_params(static_cast<float>(render_width) / render_height);
+      device.set(camera, "position", params.position);
+      device.set(camera, "lookAt", params.look_at);
+      device.set(camera, "up", params.up);
+      device.set(camera, "fov", params.fov_degrees);
+      device.set(camera, "radius", params.lens_radius);
+      device.set(camera, "focalDistance", params.focal_distance);
+      device.commit(camera);
     }
-    if (state.moved || !renderer) {
-      script.scene.camera = state.camera.to_params(static_cast<float>(render_width) / render_height);
-      renderer = std::make_unique<Renderer>(script.scene, kernels, options);
-    }
-    state.moved = false;
-    if (restart) {
-      framebuffer->clear();
+    if (state.moved || resized || !state.refine || spp == 0) {
+      device.set(framebuffer, "width", render_width);
+      device.set(framebuffer, "height", render_height);
+      device.commit(framebuffer);  // a new, empty buffer
+      fb_width = render_width, fb_height = render_height;
       spp = 0;
     }
-    const RenderStats stats = renderer->render_pass(*framebuffer, spp, 1);
+    state.moved = false;
+    const RenderStats stats = device.render_samples(renderer, camera, scene, framebuffer, spp, 1);
     ++spp;
-    tonemap_rgb8(*framebuffer, script.tone, rgb);
+    tonemap_rgb8(device.read_image(framebuffer), script.tone, rgb);
     // [ch14-frame]
     draw_texture(texture, render_width, render_height, width, height, rgb);
     ++frames;
@@ -347,7 +357,7 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   }
   if (frames > 0)
     std::printf("viewer: %d frames, %dx%d, mean frame time %.1f ms (rendering %.1f ms), %u spp at the end\n",
-                frames, options.width, options.height, frame_seconds / frames * 1e3,
+                frames, fb_width, fb_height, frame_seconds / frames * 1e3,
                 render_seconds / frames * 1e3, spp);
   glDeleteTextures(1, &texture);
   glfwDestroyWindow(window);

@@ -77,6 +77,7 @@ RenderStats& RenderStats::operator+=(const RenderStats& o) {
   samples += o.samples;
   rays += o.rays;
   shadow_rays += o.shadow_rays;
+  invalid_samples += o.invalid_samples;
   return *this;
 }
 
@@ -111,6 +112,7 @@ RenderStats render_tiles(const PathTracer& tracer, const RenderOptions& options,
   Progress bar(progress, tiles.size());
   RenderStats total;
   std::mutex mutex;
+  const long long invalid_before = fb.invalid_samples();
   Timer wall;
   auto body = [&](const tbb::blocked_range<size_t>& range) {
     for (size_t t = range.begin(); t != range.end(); ++t) {
@@ -129,6 +131,7 @@ RenderStats render_tiles(const PathTracer& tracer, const RenderOptions& options,
   tbb::task_arena arena(threads);
   arena.execute([&] { tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), body); });
   total.seconds = wall.seconds();
+  total.invalid_samples = static_cast<uint64_t>(fb.invalid_samples() - invalid_before);
   return total;
 }
 // [ch12-tiles]

@@ -50,6 +50,7 @@ struct RenderStats {
   uint64_t samples = 0;       ///< camera paths traced (pixels x samples per pixel)
   uint64_t rays = 0;          ///< rays traced: camera, bounce and shadow rays
   uint64_t shadow_rays = 0;   ///< of which occlusion (shadow) rays
+  uint64_t invalid_samples = 0;  ///< samples that were not finite, dropped by the framebuffer
 
   /// Camera paths per second.
   double samples_per_second() const { return seconds > 0 ? samples / seconds : 0; }

@@ -26,7 +26,7 @@ namespace {
 const std::vector<std::string>& types_of(ObjectKind kind) {
   static const std::vector<std::string> camera{"pinhole", "thinlens"}, texture{"image", "constant"},
       light{"point", "directional", "distant", "ambient", "triangle", "quad", "environment"},
-      shape{"trianglemesh", "sphere"}, scene{"default"}, renderer{"pathtracer", "debug"},
+      shape{"trianglemesh", "sphere"}, scene{"default", "imported"}, renderer{"pathtracer", "debug"},
       framebuffer{"rgb"}, none{};
   switch (kind) {
     case ObjectKind::camera: return camera;
@@ -354,10 +354,13 @@ std::shared_ptr<const Version> build_shape(const Object& o, const ParamReader& p
 }
 
 // [ch13-scene-commit]
-std::shared_ptr<const Version> build_scene(const Object& o, const ParamReader& p) {
+std::shared_ptr<const Version> build_scene(const Object& o, const ParamReader& p, const KernelFactory& kernels) {
   auto v = std::make_shared<SceneVersion>(o.counters);
-  const auto shapes = p.get_versions("shapes", ObjectKind::shape);
-  const auto lights = p.get_versions("lights", ObjectKind::light);
+  const bool imported = o.type == "imported";
+  if (imported && (p.has("shapes") || p.has("lights")))
+    p.fail(p.has("shapes") ? "shapes" : "lights", "an imported scene has its content already");
+  const auto shapes = imported ? std::vector<std::shared_ptr<const Version>>{} : p.get_versions("shapes", ObjectKind::shape);
+  const auto lights = imported ? std::vector<std::shared_ptr<const Version>>{} : p.get_versions("lights", ObjectKind::light);
   AccelConfig config;
   config.accel = p.get_string("accel", "");
   config.tri = p.get_string("tri", "");
@@ -370,8 +373,9 @@ std::shared_ptr<const Version> build_scene(const Object& o, const ParamReader& p
     if (!config.isa) p.fail("isa", "unknown ISA '" + isa + "' (scalar, sse4, avx2, avx512)");
   }
   // Merge the shapes into one mesh, as chapter 12's RenderScene wants: vertex numbers are
-  // offset, materials shared between shapes are stored once.
+  // offset, materials shared between shapes are stored once. An imported scene is merged.
   RenderScene& sc = v->scene;
+  if (imported) sc = *o.imported;
   const bool any_normals = std::any_of(shapes.begin(), shapes.end(), [](auto& s) { return !static_cast<const ShapeVersion&>(*s).normals.empty(); });
   const bool any_uvs = std::any_of(shapes.begin(), shapes.end(), [](auto& s) { return !static_cast<const ShapeVersion&>(*s).uvs.empty(); });
   const bool any_motion = std::any_of(shapes.begin(), shapes.end(), [](auto& s) { return !static_cast<const ShapeVersion&>(*s).vertices_t1.empty(); });
@@ -419,8 +423,12 @@ std::shared_ptr<const Version> build_scene(const Object& o, const ParamReader& p
   if (sc.mesh.triangles.empty()) p.fail("shapes", "the scene has no triangles (give it at least one shape)");
   try {
     sc.validate();
-    v->kernels = std::make_unique<AccelKernels>(sc, config);
+    RenderKernels built = kernels ? kernels(sc, config) : make_rtk_kernels(sc, config);
+    v->kernels = std::move(built.kernels);
+    v->kernels_summary = std::move(built.summary);
   } catch (const std::invalid_argument& e) {
+    p.fail(e.what());
+  } catch (const std::runtime_error& e) {  // another system's kernels may fail to build
     p.fail(e.what());
   }
   v->parts.insert(v->parts.end(), shapes.begin(), shapes.end());
@@ -453,6 +461,7 @@ std::shared_ptr<const Version> build_renderer(const Object& o, const ParamReader
     p.fail("filter", e.what());
   }
   r.filter_radius = p.get_float("filterRadius", 0);
+  r.progress = p.get_int("progress", 0) != 0;
   p.finish();
   if (r.spp < 1) p.fail("spp", "must be at least 1");
   if (r.max_depth < 0) p.fail("maxDepth", "must not be negative");
@@ -474,7 +483,8 @@ std::shared_ptr<const Version> build_framebuffer(const Object& o, const ParamRea
 
 }  // namespace
 
-std::shared_ptr<const Version> build_version(const Object& o, const ParamMap& params, const WarningHandler& warn) {
+std::shared_ptr<const Version> build_version(const Object& o, const ParamMap& params, const CommitContext& context) {
+  const WarningHandler& warn = context.warn;
   const ParamReader p(o, params);
   switch (o.kind) {
     case ObjectKind::camera: return build_camera(o, p);
@@ -482,7 +492,7 @@ std::shared_ptr<const Version> build_version(const Object& o, const ParamMap& pa
     case ObjectKind::texture: return build_texture(o, p);
     case ObjectKind::light: return build_light(o, p);
     case ObjectKind::shape: return build_shape(o, p);
-    case ObjectKind::scene: return build_scene(o, p);
+    case ObjectKind::scene: return build_scene(o, p, context.kernels);
     case ObjectKind::renderer: return build_renderer(o, p);
     case ObjectKind::framebuffer: return build_framebuffer(o, p);
   }

@@ -30,6 +30,7 @@ const std::string& Handle::type() const { return device_detail::object_of(*this)
 struct Device::State {
   std::shared_ptr<Counters> counters = std::make_shared<Counters>();
   WarningHandler warn;
+  KernelFactory kernels;
 };
 
 namespace {
@@ -51,7 +52,10 @@ bool may_refer_to(ObjectKind from, ObjectKind to) {
 
 }  // namespace
 
-Device::Device(WarningHandler warn) : state_(std::make_shared<State>()) { state_->warn = std::move(warn); }
+Device::Device(WarningHandler warn, KernelFactory kernels) : state_(std::make_shared<State>()) {
+  state_->warn = std::move(warn);
+  state_->kernels = std::move(kernels);
+}
 Device::~Device() = default;
 
 Handle Device::create(ObjectKind kind, std::string_view type) {
@@ -59,6 +63,12 @@ Handle Device::create(ObjectKind kind, std::string_view type) {
     fail(std::string("unknown ") + kind_name(kind) + " type '" + std::string(type) + "' (known: " +
          device_detail::known_types(kind) + ")");
   return Handle(std::make_shared<Object>(state_->counters, kind, std::string(type)));
+}
+
+Handle Device::import_scene(RenderScene scene) {
+  auto object = std::make_shared<Object>(state_->counters, ObjectKind::scene, "imported");
+  object->imported = std::make_shared<const RenderScene>(std::move(scene));
+  return Handle(std::move(object));
 }
 
 namespace {
@@ -109,7 +119,7 @@ void Device::commit(const Handle& handle) {
     std::lock_guard lock(o.mutex);
     params = o.params;
   }
-  std::shared_ptr<const device_detail::Version> version = device_detail::build_version(o, params, state_->warn);
+  std::shared_ptr<const device_detail::Version> version = device_detail::build_version(o, params, {state_->warn, state_->kernels});
   // Swapping the pointer is the whole commit: whoever copied the old one keeps it.
   std::lock_guard lock(o.mutex);
   o.current = std::move(version);
@@ -141,8 +151,18 @@ std::shared_ptr<const V> current_version(const Object& o, ObjectKind kind, const
 }  // namespace
 
 // [ch13-render-frame]
-void Device::render_frame(const Handle& renderer, const Handle& camera, const Handle& scene,
-                          const Handle& framebuffer) {
+RenderStats Device::render_frame(const Handle& renderer, const Handle& camera, const Handle& scene,
+                                 const Handle& framebuffer) {
+  return render(renderer, camera, scene, framebuffer, std::nullopt);
+}
+
+RenderStats Device::render_samples(const Handle& renderer, const Handle& camera, const Handle& scene,
+                                   const Handle& framebuffer, uint32_t first_sample, uint32_t count) {
+  return render(renderer, camera, scene, framebuffer, std::make_pair(first_sample, count));
+}
+
+RenderStats Device::render(const Handle& renderer, const Handle& camera, const Handle& scene,
+                           const Handle& framebuffer, std::optional<std::pair<uint32_t, uint32_t>> samples) {
   using namespace device_detail;
   // Take the four current versions: commits made while the frame renders go to the next one.
   const auto r = current_version<RendererVersion>(own(state_->counters, renderer, "render_frame"), ObjectKind::renderer, "renderer");
@@ -159,10 +179,23 @@ void Device::render_frame(const Handle& renderer, const Handle& camera, const Ha
   options.width = f->framebuffer.width();
   options.height = f->framebuffer.height();
   const Renderer render(frame_scene, *s->kernels, options);
+  if (samples) return render.render_pass(f->framebuffer, samples->first, samples->second);
   f->framebuffer.clear();
-  render.render(f->framebuffer);
+  return render.render(f->framebuffer);
 }
 // [ch13-render-frame]
+
+std::string Device::kernels_summary(const Handle& scene) const {
+  using namespace device_detail;
+  return current_version<SceneVersion>(own(state_->counters, scene, "kernels_summary"), ObjectKind::scene, "scene")
+      ->kernels_summary;
+}
+
+std::shared_ptr<const RayKernels> Device::kernels(const Handle& scene) const {
+  using namespace device_detail;
+  const auto s = current_version<SceneVersion>(own(state_->counters, scene, "kernels"), ObjectKind::scene, "scene");
+  return std::shared_ptr<const RayKernels>(s, s->kernels.get());  // shares the version's ownership
+}
 
 Image Device::read_image(const Handle& framebuffer) const {
   using namespace device_detail;

@@ -10,15 +10,20 @@
 #include <atomic>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
 #include "01_base/vec3.h"
 #include "10_materials/material.h"
+#include "12_pathtracer/render.h"
+#include "12_pathtracer/scene.h"
 #include "image/image.h"
 #include "image/tonemap.h"
+#include "render_kernels/accel_kernels.h"
 
 namespace rtk {
 
@@ -86,8 +91,10 @@ struct DeviceCounts {
 class Device {
  public:
   /// A device whose warnings (an approximated material, an ignored material parameter) go to
-  /// `warn`, or nowhere if it is empty.
-  explicit Device(WarningHandler warn = {});
+  /// `warn`, or nowhere if it is empty, and whose scenes are traced by the kernels `kernels`
+  /// builds at each scene commit: RTK's own (make_rtk_kernels) if it is empty. Another factory
+  /// runs the same renderer on other kernels (`rtk render -kernels embree`).
+  explicit Device(WarningHandler warn = {}, KernelFactory kernels = {});
   ~Device();
   Device(const Device&) = delete;
   Device& operator=(const Device&) = delete;
@@ -106,6 +113,15 @@ class Device {
   Handle new_framebuffer(std::string_view type = "rgb") {
     return create(ObjectKind::framebuffer, type);
   }
+
+  // [ch13-import]
+  /// A scene of type "imported" whose geometry, materials and lights are `scene`'s, as the
+  /// scene-file readers of lib/scene make it (the guide's loaders, too, hand whole files to
+  /// the device): `rtk render` and the viewer go through here. Its camera is not used (frames
+  /// take a camera object). Like any scene it renders only once committed, takes the
+  /// parameters `accel`, `tri`, `isa` and `threads`, and refuses `shapes` and `lights`.
+  Handle import_scene(RenderScene scene);
+  // [ch13-import]
 
   /// Buffers a parameter (replacing an earlier value of the same name). Nothing is checked or
   /// built until commit(); committed versions do not see it.
@@ -134,9 +150,20 @@ class Device {
 
   /// Renders one frame: clears the framebuffer and path traces the scene's committed version
   /// through the camera's with the renderer's options (RenderOptions; width and height are the
-  /// framebuffer's). All four objects must be committed.
-  void render_frame(const Handle& renderer, const Handle& camera, const Handle& scene,
-                    const Handle& framebuffer);
+  /// framebuffer's). All four objects must be committed. Returns what the frame did and took.
+  RenderStats render_frame(const Handle& renderer, const Handle& camera, const Handle& scene,
+                           const Handle& framebuffer);
+  /// Progressive refinement: adds samples first_sample .. first_sample + count - 1 of every
+  /// pixel to the framebuffer without clearing it (the renderer's spp is not used). Calls with
+  /// consecutive ranges give exactly the image of one call over the whole range.
+  RenderStats render_samples(const Handle& renderer, const Handle& camera, const Handle& scene,
+                             const Handle& framebuffer, uint32_t first_sample, uint32_t count);
+  /// What the scene's committed version is traced with, e.g. "accel bvh8.objectsplit, tri
+  /// triangle8.moeller, isa avx2 (...); build 0.002 s, 0.1 MB".
+  std::string kernels_summary(const Handle& scene) const;
+  /// The ray kernels of the scene's committed version (for picking a point with a ray); the
+  /// pointer keeps that version alive.
+  std::shared_ptr<const RayKernels> kernels(const Handle& scene) const;
   /// The framebuffer's current image (linear radiance, one colour per pixel).
   Image read_image(const Handle& framebuffer) const;
   /// Writes the framebuffer's image to `path` (format from the extension, lib/image).
@@ -146,6 +173,8 @@ class Device {
   DeviceCounts counts() const;
 
  private:
+  RenderStats render(const Handle& renderer, const Handle& camera, const Handle& scene, const Handle& framebuffer,
+                     std::optional<std::pair<uint32_t, uint32_t>> samples);
   struct State;
   std::shared_ptr<State> state_;
 };

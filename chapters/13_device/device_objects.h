@@ -64,6 +64,7 @@ struct Object {
   mutable std::mutex mutex;                // guards params and current
   ParamMap params;                         // what set() buffered
   std::shared_ptr<const Version> current;  // the last committed version, or null
+  std::shared_ptr<const RenderScene> imported;  // an "imported" scene's content (import_scene)
 };
 
 struct CameraVersion final : Version {
@@ -106,7 +107,8 @@ struct ShapeVersion final : Version {
 struct SceneVersion final : Version {
   using Version::Version;
   RenderScene scene;
-  std::unique_ptr<AccelKernels> kernels;
+  std::unique_ptr<const RayKernels> kernels;
+  std::string kernels_summary;
   std::vector<std::shared_ptr<const Version>> parts;
 };
 
@@ -164,9 +166,16 @@ class ParamReader {
 /// The object a handle refers to (so that the commit code can read it); throws for null.
 const Object& object_of(const Handle& handle);
 
+/// What a commit needs from its device besides the object: where warnings go, and how a
+/// scene's kernels are built.
+struct CommitContext {
+  const WarningHandler& warn;
+  const KernelFactory& kernels;
+};
+
 /// Makes a new committed version of `object` from `params` (commit_objects.cpp).
 std::shared_ptr<const Version> build_version(const Object& object, const ParamMap& params,
-                                             const WarningHandler& warn);
+                                             const CommitContext& context);
 
 /// Whether an object of `kind` may be created with `type`.
 bool known_type(ObjectKind kind, std::string_view type);

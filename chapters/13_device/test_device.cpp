@@ -91,29 +91,9 @@ float sum(const rtk::Image& a) {
   return s;
 }
 
-// The message of the exception `f` throws (empty if none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
-
-TEST_CASE("ch13: a scene built through handles renders the image of the same RenderScene built directly") {
-  Device d;
-  const Built b = build(d);
-  const rtk::Image via_device = render(d, b);
-  CHECK(via_device.width == 24);
-  CHECK(via_device.height == 20);
-  CHECK(sum(via_device) > 0.0f);
-
-  // The same scene, by hand: shapes in order, one material per distinct material, the quad
-  // light's triangles last.
+// The scene of build(), by hand: shapes in order, one material per distinct material, the quad
+// light's triangles last (what a scene commit merges them into).
+rtk::RenderScene by_hand() {
   rtk::RenderScene s;
   rtk::ParameterList floor_params;
   floor_params.set("reflectance", rtk::Color(0.7f, 0.6f, 0.5f));
@@ -139,17 +119,108 @@ TEST_CASE("ch13: a scene built through handles renders the image of the same Ren
   s.camera.position = {0, 4, -4};
   s.camera.look_at = {0, 0, 0};
   s.camera.fov_degrees = 50;
-  const rtk::AccelKernels kernels(s, rtk::AccelConfig{});
+  return s;
+}
+
+// What the renderer object of build() says, as chapter 12's options for a 24 x 20 image.
+rtk::RenderOptions built_options() {
   rtk::RenderOptions options;
   options.width = 24;
   options.height = 20;
   options.spp = 2;
   options.max_depth = 3;
   options.threads = 2;
+  return options;
+}
+
+// The message of the exception `f` throws (empty if none).
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("ch13: a scene built through handles renders the image of the same RenderScene built directly") {
+  Device d;
+  const Built b = build(d);
+  const rtk::Image via_device = render(d, b);
+  CHECK(via_device.width == 24);
+  CHECK(via_device.height == 20);
+  CHECK(sum(via_device) > 0.0f);
+
+  const rtk::RenderScene s = by_hand();
+  const rtk::AccelKernels kernels(s, rtk::AccelConfig{});
   rtk::Framebuffer fb(24, 20);
-  rtk::Renderer(s, kernels, options).render(fb);
+  rtk::Renderer(s, kernels, built_options()).render(fb);
   CHECK(same(via_device, fb.resolve()));
 }
+
+TEST_CASE("ch13: an imported scene renders chapter 12's image, frame by frame or sample by sample") {
+  // rtk render and the viewer hand lib/scene's RenderScene to the device: the frame must be
+  // chapter 12's image of that scene, bit for bit, and progressive passes must add up to it.
+  Device d;
+  Built b = build(d);
+  b.scene = d.import_scene(by_hand());
+  CHECK(error_of([&] { render(d, b); }).find("not committed") != std::string::npos);
+  d.commit(b.scene);
+  const rtk::Image frame = render(d, b);
+  const rtk::RenderScene s = by_hand();
+  const rtk::AccelKernels kernels(s, rtk::AccelConfig{});
+  rtk::Framebuffer fb(24, 20);
+  const rtk::RenderStats direct = rtk::Renderer(s, kernels, built_options()).render(fb);
+  CHECK(same(frame, fb.resolve()));
+
+  // Samples 0 and 1 in two passes of one: the same image, and the statistics count the same work.
+  d.commit(b.framebuffer);  // a new, empty buffer
+  const rtk::RenderStats first = d.render_samples(b.renderer, b.camera, b.scene, b.framebuffer, 0, 1);
+  const rtk::RenderStats second = d.render_samples(b.renderer, b.camera, b.scene, b.framebuffer, 1, 1);
+  CHECK(same(d.read_image(b.framebuffer), frame));
+  CHECK(first.samples + second.samples == direct.samples);
+  CHECK(first.rays + second.rays == direct.rays);
+
+  // It takes the build parameters of a scene, and only those: its content is given.
+  d.set(b.scene, "accel", "bvh4");
+  d.set(b.scene, "tri", "triangle4v.watertight");
+  d.commit(b.scene);
+  CHECK(d.kernels_summary(b.scene).find("triangle4v.watertight") != std::string::npos);
+  d.set(b.scene, "shapes", std::vector<Handle>{b.floor});
+  CHECK(error_of([&] { d.commit(b.scene); }).find("parameter 'shapes': an imported scene has its content already") !=
+        std::string::npos);
+}
+
+TEST_CASE("ch13: a device builds its scenes' kernels with the factory it was given") {
+  // rtk render -kernels embree gives the device a factory that builds Embree's kernels; here a
+  // factory that counts its calls and answers with RTK's kernels under another name.
+  int calls = 0;
+  Device d({}, [&](const rtk::RenderScene& scene, const rtk::AccelConfig& config) {
+    ++calls;
+    rtk::RenderKernels k = rtk::make_rtk_kernels(scene, config);
+    k.summary = "counted: " + k.summary;
+    return k;
+  });
+  const Built b = build(d);
+  CHECK(calls == 1);
+  CHECK(d.kernels_summary(b.scene).starts_with("counted: accel "));
+  // The kernels of a committed version outlive a new commit of the scene for whoever holds them.
+  const std::shared_ptr<const rtk::RayKernels> held = d.kernels(b.scene);
+  d.commit(b.scene);
+  CHECK(calls == 2);
+  CHECK(d.kernels(b.scene) != held);
+  std::vector<rtk::Ray> rays(1);
+  rays[0].org = {0, 2, 0};  // below the quad light at y = 2.5
+  rays[0].dir = {0, -1, 0};
+  std::vector<rtk::Hit> hits(1);
+  held->intersect(rays, hits);
+  CHECK(hits[0].found());
+  CHECK(hits[0].t == doctest::Approx(1.0f));  // the blocker at y = 1
+}
+
 
 TEST_CASE("ch13: a commit leaves the versions others hold unchanged") {
   Device d;

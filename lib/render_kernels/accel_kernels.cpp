@@ -1,6 +1,7 @@
 #include "render_kernels/accel_kernels.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace rtk {
 
@@ -41,6 +42,16 @@ void AccelKernels::occluded(std::span<const Ray> rays, std::span<uint8_t> occlud
 std::string AccelKernels::name() const {
   const AccelInfo& i = accel_.info();
   return "rtk " + i.accel + " " + i.tri + " " + std::string(isa_name(i.isa));
+}
+
+RenderKernels make_rtk_kernels(const RenderScene& scene, const AccelConfig& config) {
+  auto kernels = std::make_unique<AccelKernels>(scene, config);
+  const AccelInfo& info = kernels->info();
+  char figures[64];
+  std::snprintf(figures, sizeof figures, "build %.3f s, %.1f MB", info.build_seconds, info.bytes / 1e6);
+  std::string summary = "accel " + info.accel + ", tri " + info.tri + ", isa " + std::string(isa_name(info.isa)) +
+                        " (" + info.choice + "); " + figures;
+  return {std::move(kernels), std::move(summary)};
 }
 
 }  // namespace rtk

@@ -4,6 +4,8 @@
 /// structure for a static scene, the motion structure (chapter 8) only when vertices move.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <span>
 #include <string>
 
@@ -32,5 +34,21 @@ class AccelKernels final : public RayKernels {
  private:
   Accel accel_;
 };
+
+/// Ray kernels built for a scene, and one line that says what was built.
+struct RenderKernels {
+  std::unique_ptr<const RayKernels> kernels;
+  /// e.g. "accel bvh8.objectsplit, tri triangle8.moeller, isa avx512 (default for the CPU);
+  /// build 0.012 s, 0.1 MB".
+  std::string summary;
+};
+
+/// Builds whatever kernels a renderer's scene is to be traced with, from the scene and the
+/// -accel, -tri, -isa and build-thread settings. The device API (chapter 13) builds every
+/// committed scene's kernels through one of these.
+using KernelFactory = std::function<RenderKernels(const RenderScene& scene, const AccelConfig& config)>;
+
+/// RTK's own kernels (an AccelKernels) for `scene` with `config`, and their summary.
+RenderKernels make_rtk_kernels(const RenderScene& scene, const AccelConfig& config);
 
 }  // namespace rtk

@@ -11,22 +11,12 @@
 #include <string>
 #include <string_view>
 
-#include "12_pathtracer/ray_kernels.h"
-#include "12_pathtracer/scene.h"
-#include "api/accel.h"
+#include "render_kernels/accel_kernels.h"
 
 namespace rtk {
 
 /// Whether this build can run the renderer on Embree's kernels.
 bool embree_kernels_available();
-
-/// The kernels a render runs on, and one line that says what was built.
-struct RenderKernels {
-  std::unique_ptr<RayKernels> kernels;
-  /// e.g. "accel bvh8.objectsplit, tri triangle8.moeller, isa avx512 (default for the CPU);
-  /// build 0.012 s, 0.1 MB" or "embree 3.13.5 (rtcIntersect1, medium-quality build); build ...".
-  std::string summary;
-};
 
 /// Builds `which` ("rtk" or "embree") for `scene`. RTK's kernels take `config` (-accel, -tri,
 /// -isa; threads for the build). Embree takes only config.threads: -accel, -tri and -isa
@@ -34,5 +24,9 @@ struct RenderKernels {
 /// Throws std::invalid_argument naming -kernels for an unknown name, for Embree in a build
 /// without it, and for a moving scene on Embree.
 RenderKernels make_render_kernels(const RenderScene& scene, const AccelConfig& config, std::string_view which);
+
+/// make_render_kernels(scene, config, which) as a factory for the device API (chapter 13).
+/// Checks `which` at once, so that an unknown name fails before any scene is read.
+KernelFactory kernel_factory(std::string which);
 
 }  // namespace rtk

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "image/image_io.h"
+#include "render_test_support.h"
 
 namespace fs = std::filesystem;
 
@@ -57,6 +58,28 @@ TEST_CASE("ch12: rtk render writes a PNG of the size asked for") {
   CHECK(s.status == 0);
   CHECK(fs::exists(out));
   fs::remove(out);
+}
+
+TEST_CASE("ch12: rtk render goes through the device and writes chapter 12's image, bit for bit") {
+  // The command hands the script's scene to chapter 13's device, which renders from committed
+  // versions; a PFM file keeps the linear floats, so the file must hold exactly the image that
+  // chapter 12's renderer makes of the same scene and options in this process.
+  const fs::path out = fs::temp_directory_path() / ("rtk_render_device_" + std::to_string(getpid()) + ".pfm");
+  const Result r = run_rtk("render -c " + kCornell + " -size 20 14 -spp 3 -seed 5 -threads 2 -o " + out.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const rtk::Image file = rtk::read_image(out.string());
+  fs::remove(out);
+  rtk::SceneScript script = rtk::test::cornell_box();
+  rtk::RenderOptions options = script.options;
+  options.width = 20, options.height = 14, options.spp = 3, options.seed = 5, options.threads = 1;
+  const rtk::Image direct = rtk::test::render_image(script.scene, options);
+  REQUIRE(file.pixels.size() == direct.pixels.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < file.pixels.size(); ++i)
+    differ += file.pixels[i].r != direct.pixels[i].r || file.pixels[i].g != direct.pixels[i].g ||
+              file.pixels[i].b != direct.pixels[i].b;
+  CHECK(differ == 0);
 }
 
 TEST_CASE("ch12: rtk render refuses what it cannot do, with exit status 2") {

@@ -1,0 +1,26 @@
+/// \file
+/// What a scene script says, as objects of chapter 13's device: `rtk render` and the viewer
+/// read the script with lib/scene, hand its scene to the device with import_scene, and make
+/// the camera, the renderer and the framebuffer from its settings through handles. Frames are
+/// then rendered by the device, from committed versions only.
+#pragma once
+
+#include "13_device/device.h"
+#include "scene/scene_script.h"
+
+namespace rtk::cli {
+
+/// The script's scene, imported and committed with its -accel, -tri, -isa and `threads` build
+/// threads. Throws std::invalid_argument (from the commit) for a configuration RTK lacks.
+Handle commit_scene(Device& device, const SceneScript& script, int threads);
+
+/// A committed camera of `params` ("pinhole", or "thinlens" with a lens radius).
+Handle commit_camera(Device& device, const CameraParams& params);
+
+/// A committed renderer with `options` ("pathtracer", or "debug" for the guide's eye light).
+Handle commit_renderer(Device& device, const RenderOptions& options);
+
+/// A committed framebuffer of width x height pixels.
+Handle commit_framebuffer(Device& device, int width, int height);
+
+}  // namespace rtk::cli
