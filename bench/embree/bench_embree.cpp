@@ -3,7 +3,8 @@
 // public API, their ratio, the agreement of their answers, and build speed and memory.
 //
 //   build/bench/embree/bench_embree [--rays=N] [--threads=N] [--scenes=A.obj,B.obj|DIR]
-//                                   [--procedural=0] [--rtk=default|all] [benchmark options]
+//                                   [--procedural=0] [--rtk=default|all] [--embree-isa=sse4.2|avx2|...]
+//                                   [benchmark options]
 //   RTK_SCENES=../shared/scenes/bunny_stanford_full build/bench/embree/bench_embree
 //
 // Benchmark names: build/SCENE/BUILDER and trace/SCENE/KIND/TRACER, where BUILDER is "embree"
@@ -41,6 +42,8 @@ struct Settings {
   int threads = 1;  // build threads of both; tracing is always one thread
   bool procedural = true;
   bool all_rtk = false;
+  std::string embree_isa;  // empty: Embree's best for the CPU; else its max_isa option
+
   std::vector<std::filesystem::path> scene_files;
 };
 Settings settings;
@@ -68,7 +71,7 @@ const std::vector<Ray>& rays_for(Scene& s, RayKind kind) {
 }
 
 EmbreeScene& embree_for(Scene& s) {
-  if (!s.embree) s.embree = std::make_unique<EmbreeScene>(s.mesh, settings.threads);
+  if (!s.embree) s.embree = std::make_unique<EmbreeScene>(s.mesh, settings.threads, settings.embree_isa);
   return *s.embree;
 }
 
@@ -241,6 +244,7 @@ void parse_settings(int& argc, char** argv) {
     else if (const char* v = value("--scenes=")) add_scene_files(v);
     else if (const char* v = value("--procedural=")) settings.procedural = std::atoi(v) != 0;
     else if (const char* v = value("--rtk=")) settings.all_rtk = std::string(v) == "all";
+    else if (const char* v = value("--embree-isa=")) settings.embree_isa = v;
     else argv[kept++] = argv[i];
   }
   argc = kept;
@@ -295,7 +299,9 @@ int main(int argc, char** argv) {
     }
   }
 
-  benchmark::AddCustomContext("embree", EmbreeScene::version() + ", RTC_BUILD_QUALITY_MEDIUM");
+  benchmark::AddCustomContext("embree", EmbreeScene::version() + ", RTC_BUILD_QUALITY_MEDIUM" +
+                                            (settings.embree_isa.empty() ? std::string(", its best ISA for the CPU")
+                                                                         : ", max_isa=" + settings.embree_isa));
   benchmark::AddCustomContext("build_threads", std::to_string(settings.threads));
   benchmark::AddCustomContext("trace_threads", "1");
   benchmark::AddCustomContext("rays_per_benchmark", std::to_string(settings.rays));

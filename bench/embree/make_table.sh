@@ -4,6 +4,9 @@
 #
 #   bash bench/embree/make_table.sh            # build dir "build", scenes from ../shared/scenes
 #   BUILD_DIR=build-x RTK_SCENES=/path/a.obj,/path/b.obj bash bench/embree/make_table.sh
+#   RESULTS=bench/embree/results_sse4.md bash bench/embree/make_table.sh --embree-isa=sse4.2 \
+#       --benchmark_filter='(/embree|rtk:sse4:|rtk:bvh4.objectsplit:triangle4.moeller)'
+#                                                # RTK's SSE4 kernels against Embree's SSE4.2 ones
 #
 # Extra arguments go to bench_embree (e.g. --rays=65536 --benchmark_min_time=0.2).
 # The formatter is a CMake script (format_table.cmake): no python needed.
@@ -22,7 +25,8 @@ if [ -z "${RTK_SCENES:-}" ]; then
   done
   export RTK_SCENES="$list"
 fi
-json="$build_dir/bench/embree_results.json"
+results=${RESULTS:-$here/results.md}
+json="$build_dir/bench/$(basename "$results" .md).json"
 "$build_dir/bench/bench_embree" --benchmark_format=console --benchmark_out="$json" \
   --benchmark_out_format=json "$@"
-cmake -DIN="$json" -DOUT="$here/results.md" -P "$here/format_table.cmake"
+cmake -DIN="$json" -DOUT="$results" -P "$here/format_table.cmake"

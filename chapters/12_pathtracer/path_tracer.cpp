@@ -113,7 +113,13 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   const Vec3f ng = normalize(cross(v[1] - v[0], v[2] - v[0]));
   const Vec3f wo = -dir;
   if (options_.eye_light) {
-    path.radiance = Color(std::fabs(dot(ng, wo)));
+    // [ch12-debug]
+    // The guide's debug renderer: |cos| between the ray and the surface. A back face (a hit
+    // from the side the normal points away from) is tinted red, so that a ray which leaked
+    // into a closed, outward-facing mesh and hit its far wall from inside shows up.
+    const float c = dot(ng, wo);
+    path.radiance = c >= 0.0f ? Color(c) : Color(-c, -0.15f * c, -0.15f * c);
+    // [ch12-debug]
     return;
   }
 

@@ -30,11 +30,13 @@ SphereMesh tessellate_sphere(Vec3f centre, float radius, int num_theta, int num_
     }
   auto at = [&](int i, int j) { return static_cast<uint32_t>(i * num_phi + (j % num_phi)); };
   // The pole rings would give degenerate triangles: the first and last ring get one triangle
-  // per quad, the others two.
+  // per quad, the others two. Each is wound so that its geometric normal points outward, as
+  // the vertex normals do: the renderer turns a shading normal to the geometric normal's
+  // side, and a glass sphere wound inward would refract as if its inside were outside.
   for (int i = 1; i <= num_theta; ++i)
     for (int j = 1; j <= num_phi; ++j) {
-      if (i > 1) m.triangles.push_back({at(i, j - 1), at(i - 1, j), at(i - 1, j - 1)});
-      if (i < num_theta) m.triangles.push_back({at(i, j), at(i - 1, j), at(i, j - 1)});
+      if (i > 1) m.triangles.push_back({at(i, j - 1), at(i - 1, j - 1), at(i - 1, j)});
+      if (i < num_theta) m.triangles.push_back({at(i, j), at(i, j - 1), at(i - 1, j)});
     }
   return m;
 }

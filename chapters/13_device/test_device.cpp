@@ -412,6 +412,14 @@ TEST_CASE("ch13: materials warn as the scene files do, and spheres follow Embree
     const Vec3f d = s.vertices[i] - Vec3f{1, 2, 3};
     CHECK(std::abs(std::sqrt(dot(d, d)) - 2.0f) < 1e-5f);
   }
+  // Every triangle faces outward, as its vertex normals do (a glass sphere wound the other way
+  // would refract as if its inside were its outside).
+  for (const auto& t : s.triangles) {
+    const Vec3f a = s.vertices[t[0]], b = s.vertices[t[1]], c = s.vertices[t[2]];
+    const Vec3f ng = cross(b - a, c - a);
+    CHECK(dot(ng, (a + b + c) * (1.0f / 3.0f) - Vec3f{1, 2, 3}) > 0.0f);
+    CHECK(dot(ng, s.normals[t[0]]) > 0.0f);
+  }
   CHECK_THROWS_AS(rtk::tessellate_sphere({0, 0, 0}, -1.0f, 5, 7), std::invalid_argument);
   CHECK_THROWS_AS(rtk::tessellate_sphere({0, 0, 0}, 1.0f, 1, 7), std::invalid_argument);
 }

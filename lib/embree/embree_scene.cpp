@@ -13,8 +13,8 @@ bool EmbreeScene::monitor(void* user, ssize_t bytes, bool /*post*/) {
   return true;  // never refuse an allocation: we measure, we do not limit
 }
 
-EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads) : threads_(threads) {
-  const std::string config = "threads=" + std::to_string(threads);
+EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads, const std::string& isa) : threads_(threads) {
+  const std::string config = "threads=" + std::to_string(threads) + (isa.empty() ? "" : ",max_isa=" + isa);
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw std::runtime_error("Embree: cannot create a device (" + config + ")");
   rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeScene::monitor, this);

@@ -29,9 +29,12 @@ namespace rtk {
 /// An Embree device and scene holding one triangle mesh.
 class EmbreeScene {
  public:
-  /// Builds the scene with `threads` build threads (Embree's "threads=N" device option).
-  /// Throws std::runtime_error with Embree's message when the device cannot be made.
-  EmbreeScene(const TriangleMesh& mesh, int threads);
+  /// Builds the scene with `threads` build threads (Embree's "threads=N" device option) and,
+  /// if `isa` is not empty, with Embree's kernels for at most that instruction set (its
+  /// "max_isa" option: "sse4.2", "avx", "avx2", ...; Embree then uses the node width and
+  /// leaves it chooses for that ISA). Throws std::runtime_error with Embree's message when the
+  /// device cannot be made.
+  EmbreeScene(const TriangleMesh& mesh, int threads, const std::string& isa = "");
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
