@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the Embree comparison and writes its markdown table (bench/embree/results.md, for the
-# book); the raw JSON stays in the build folder (bench/embree_results.json):
+# book); the raw JSON stays in the build folder (bench/results.json, named after the table):
 #
 #   bash bench/embree/make_table.sh            # build dir "build", scenes from ../shared/scenes
 #   BUILD_DIR=build-x RTK_SCENES=/path/a.obj,/path/b.obj bash bench/embree/make_table.sh
