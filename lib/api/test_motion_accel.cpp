@@ -113,3 +113,26 @@ TEST_CASE("api: a static pair builds the static default; bvh4mb is refused witho
   CHECK_THROWS_WITH_AS(check_motion_meshes(pair.t0, fewer, "a.obj", "b.obj"), doctest::Contains("b.obj does not match a.obj"),
                        std::invalid_argument);
 }
+
+TEST_CASE("api: motion is stored sparsely unless most vertices move") {
+  // Sparse storage costs 16 bytes per vertex plus 12 per moving one, dense 24 per vertex: the
+  // API keeps sparse motion while fewer than two vertices in three move (chapter 8).
+  const Pair all_move;
+  const Accel dense(all_move.t0, all_move.t1, make_config(""));
+  CHECK(dense.info().choice.find("dense motion") != std::string::npos);
+  Pair few_move;
+  few_move.t1 = few_move.t0;
+  for (size_t v = 0; v < few_move.t1.vertices.size(); v += 4) few_move.t1.vertices[v] += Vec3f{0.01f, 0, 0};
+  const Accel sparse(few_move.t0, few_move.t1, make_config(""));
+  CHECK(sparse.info().choice.find("sparse motion") != std::string::npos);
+  // Both storages trace the same scene to the same hits (chapter 8 checks it bit for bit).
+  std::vector<Ray> rays = test::random_rays(merge(all_move.t0.bounds(), all_move.t1.bounds()), 200, 5);
+  for (size_t i = 0; i < rays.size(); ++i) rays[i].time = float(i % 7) / 6.0f;
+  std::vector<Hit> hits(rays.size());
+  dense.intersect(rays, hits);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const TriangleMesh at = all_move.at(rays[i].time);
+    const std::string why = test::compare_hits(at, rays[i], hits[i], test::brute_force_intersect(at, rays[i]));
+    CHECK_MESSAGE(why.empty(), "ray ", i, ": ", why);
+  }
+}
