@@ -3,7 +3,7 @@
 // public API, their ratio, the agreement of their answers, and build speed and memory.
 //
 //   build/bench/embree/bench_embree [--rays=N] [--threads=N] [--scenes=A.obj,B.obj|DIR]
-//                                   [--procedural=0] [--rtk=default|all] [--embree-isa=sse4.2|avx2|...]
+//                                   [--procedural=0] [--size=F] [--rtk=default|all] [--embree-isa=sse4.2|avx2|...]
 //                                   [benchmark options]
 //   RTK_SCENES=../shared/scenes/bunny_stanford_full build/bench/embree/bench_embree
 //
@@ -16,6 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -43,6 +44,7 @@ struct Settings {
   bool procedural = true;
   bool all_rtk = false;
   std::string embree_isa;  // empty: Embree's best for the CPU; else its max_isa option
+  double size = 1.0;       // scale of the procedural scenes' triangle counts
 
   std::vector<std::filesystem::path> scene_files;
 };
@@ -245,11 +247,16 @@ void parse_settings(int& argc, char** argv) {
     else if (const char* v = value("--procedural=")) settings.procedural = std::atoi(v) != 0;
     else if (const char* v = value("--rtk=")) settings.all_rtk = std::string(v) == "all";
     else if (const char* v = value("--embree-isa=")) settings.embree_isa = v;
+    else if (const char* v = value("--size=")) settings.size = std::strtod(v, nullptr);
     else argv[kept++] = argv[i];
   }
   argc = kept;
   if (settings.rays == 0) settings.rays = 1;
   if (settings.threads < 1) settings.threads = 1;
+  if (!(settings.size > 0.0) || settings.size > 1e4) {
+    std::fprintf(stderr, "bench_embree: --size must be a scale factor in (0, 10000]\n");
+    std::exit(2);
+  }
   if (const char* env = std::getenv("RTK_SCENES")) add_scene_files(env);
 }
 
@@ -261,10 +268,13 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
   if (settings.procedural) {
-    add_scene("sphere", test::make_sphere(256, 512));
-    add_scene("soup", test::make_random_soup(100000, 1, 0.05f));
-    add_scene("terrain", test::make_terrain(256, 1));
-    add_scene("slivers", test::make_slivers(2000, 1));
+    // --size=F scales every procedural scene's triangle count by about F (1: the default sizes).
+    const double f = settings.size;
+    auto scaled = [f](double n) { return std::max(2, int(std::lround(n))); };
+    add_scene("sphere", test::make_sphere(scaled(256 * std::sqrt(f)), scaled(512 * std::sqrt(f))));
+    add_scene("soup", test::make_random_soup(scaled(100000 * f), 1, float(0.05 / std::sqrt(f))));
+    add_scene("terrain", test::make_terrain(scaled(256 * std::sqrt(f)), 1));
+    add_scene("slivers", test::make_slivers(scaled(2000 * f), 1));
   }
   for (const auto& file : settings.scene_files) {
     try {
