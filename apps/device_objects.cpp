@@ -14,16 +14,20 @@ Handle commit_scene(Device& device, const SceneScript& script, int threads) {
 
 Handle commit_camera(Device& device, const CameraParams& params) {
   Handle camera = device.new_camera(params.lens_radius > 0.0f ? "thinlens" : "pinhole");
+  commit_camera(device, camera, params);
+  return camera;
+}
+
+void commit_camera(Device& device, const Handle& camera, const CameraParams& params) {
   device.set(camera, "position", params.position);
   device.set(camera, "lookAt", params.look_at);
   device.set(camera, "up", params.up);
   device.set(camera, "fov", params.fov_degrees);
-  if (params.lens_radius > 0.0f) {
+  if (camera.type() == "thinlens") {
     device.set(camera, "radius", params.lens_radius);
     device.set(camera, "focalDistance", params.focal_distance);
   }
   device.commit(camera);
-  return camera;
 }
 
 Handle commit_renderer(Device& device, const RenderOptions& options) {
@@ -46,10 +50,14 @@ Handle commit_renderer(Device& device, const RenderOptions& options) {
 
 Handle commit_framebuffer(Device& device, int width, int height) {
   Handle framebuffer = device.new_framebuffer();
+  commit_framebuffer(device, framebuffer, width, height);
+  return framebuffer;
+}
+
+void commit_framebuffer(Device& device, const Handle& framebuffer, int width, int height) {
   device.set(framebuffer, "width", width);
   device.set(framebuffer, "height", height);
   device.commit(framebuffer);
-  return framebuffer;
 }
 
 }  // namespace rtk::cli

@@ -17,10 +17,17 @@ Handle commit_scene(Device& device, const SceneScript& script, int threads);
 /// A committed camera of `params` ("pinhole", or "thinlens" with a lens radius).
 Handle commit_camera(Device& device, const CameraParams& params);
 
+/// Sets `params` on an existing camera and commits its new version (a "pinhole" camera takes
+/// no lens; a "thinlens" camera with radius 0 is a pinhole).
+void commit_camera(Device& device, const Handle& camera, const CameraParams& params);
+
 /// A committed renderer with `options` ("pathtracer", or "debug" for the guide's eye light).
 Handle commit_renderer(Device& device, const RenderOptions& options);
 
 /// A committed framebuffer of width x height pixels.
 Handle commit_framebuffer(Device& device, int width, int height);
+
+/// Commits a new, empty version of width x height pixels of an existing framebuffer.
+void commit_framebuffer(Device& device, const Handle& framebuffer, int width, int height);
 
 }  // namespace rtk::cli

@@ -319,19 +319,10 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
     const int render_width = (width + scale - 1) / scale, render_height = (height + scale - 1) / scale;
     const bool resized = render_width != fb_width || render_height != fb_height;
     if (state.moved || resized) {
-      const CameraParams params = state.camera.to_params(static_cast<float>(render_width) / render_height);
-      device.set(camera, "position", params.position);
-      device.set(camera, "lookAt", params.look_at);
-      device.set(camera, "up", params.up);
-      device.set(camera, "fov", params.fov_degrees);
-      device.set(camera, "radius", params.lens_radius);
-      device.set(camera, "focalDistance", params.focal_distance);
-      device.commit(camera);
+      commit_camera(device, camera, state.camera.to_params(static_cast<float>(render_width) / render_height));
     }
     if (state.moved || resized || !state.refine || spp == 0) {
-      device.set(framebuffer, "width", render_width);
-      device.set(framebuffer, "height", render_height);
-      device.commit(framebuffer);  // a new, empty buffer
+      commit_framebuffer(device, framebuffer, render_width, render_height);  // a new, empty buffer
       fb_width = render_width, fb_height = render_height;
       spp = 0;
     }
