@@ -89,6 +89,48 @@ function(rtk_kernels_headers out)
   set(${out} ${found} PARENT_SCOPE)
 endfunction()
 
+# rtk_install_headers(<component> <public headers...>)
+# Installs the public headers and every project header they include (rtk_kernels_headers) under
+# include/rtk/, in the folders they have below chapters/ or lib/.
+function(rtk_install_headers component)
+  rtk_kernels_headers(headers ${ARGN})
+  foreach(rel IN LISTS headers)
+    get_filename_component(dir ${rel} DIRECTORY)
+    foreach(root ${PROJECT_SOURCE_DIR}/chapters ${PROJECT_SOURCE_DIR}/lib)
+      if(EXISTS ${root}/${rel})
+        install(FILES ${root}/${rel} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rtk/${dir} COMPONENT ${component})
+        break()
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
+# rtk_package_objects(<package> <libraries...>)
+# Puts every object file of the libraries into the package library, including the per-ISA
+# objects that rtk_isa_kernels() libraries hold as sources. Interface libraries carry no
+# objects; a shared library cannot be taken apart (tests/install then fails to link the
+# example, and names what is missing).
+function(rtk_package_objects package)
+  foreach(lib IN LISTS ARGN)
+    get_target_property(type ${lib} TYPE)
+    if(type STREQUAL "INTERFACE_LIBRARY")
+      continue()
+    endif()
+    if(NOT type MATCHES "^(STATIC|OBJECT)_LIBRARY$")
+      message(WARNING "${package}: ${lib} is a ${type}; only static and object libraries can be packaged")
+      continue()
+    endif()
+    target_sources(${package} PRIVATE $<TARGET_OBJECTS:${lib}>)
+    get_target_property(sources ${lib} SOURCES)
+    foreach(src IN LISTS sources)
+      if(src MATCHES "^\\$<TARGET_OBJECTS:")
+        target_sources(${package} PRIVATE ${src})
+      endif()
+    endforeach()
+    add_dependencies(${package} ${lib})
+  endforeach()
+endfunction()
+
 # rtk_add_kernels_package(API <target> HEADERS <public headers...>)
 # Adds the library rtk_kernels (exported as rtk::kernels) and its install rules, component
 # `rtk_kernels`. Call it once every chapter and lib/ have been added.
@@ -105,26 +147,7 @@ function(rtk_add_kernels_package)
   add_library(rtk::kernels ALIAS rtk_kernels)
   set_target_properties(rtk_kernels PROPERTIES OUTPUT_NAME rtk_kernels EXPORT_NAME kernels
                                                LINKER_LANGUAGE CXX)
-  foreach(lib IN LISTS libs)
-    get_target_property(type ${lib} TYPE)
-    if(type STREQUAL "INTERFACE_LIBRARY")
-      continue()
-    endif()
-    if(NOT type MATCHES "^(STATIC|OBJECT)_LIBRARY$")
-      # tests/install then fails to link the example, which names what is missing.
-      message(WARNING "rtk::kernels: ${lib} is a ${type}; only static and object libraries can be packaged")
-      continue()
-    endif()
-    target_sources(rtk_kernels PRIVATE $<TARGET_OBJECTS:${lib}>)
-    # rtk_isa_kernels() libraries hold their per-ISA objects as sources: carry those too.
-    get_target_property(sources ${lib} SOURCES)
-    foreach(src IN LISTS sources)
-      if(src MATCHES "^\\$<TARGET_OBJECTS:")
-        target_sources(rtk_kernels PRIVATE ${src})
-      endif()
-    endforeach()
-    add_dependencies(rtk_kernels ${lib})
-  endforeach()
+  rtk_package_objects(rtk_kernels ${libs})
 
   # Step 2: what a consumer needs: the headers, C++20 and the external libraries.
   target_include_directories(rtk_kernels INTERFACE
@@ -165,17 +188,7 @@ function(rtk_add_kernels_package)
   endif()
 
   # Step 3: the install rules, all in one component.
-  rtk_kernels_headers(headers ${ARG_HEADERS})
-  foreach(rel IN LISTS headers)
-    get_filename_component(dir ${rel} DIRECTORY)
-    foreach(root ${PROJECT_SOURCE_DIR}/chapters ${PROJECT_SOURCE_DIR}/lib)
-      if(EXISTS ${root}/${rel})
-        install(FILES ${root}/${rel} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rtk/${dir}
-                COMPONENT rtk_kernels)
-        break()
-      endif()
-    endforeach()
-  endforeach()
+  rtk_install_headers(rtk_kernels ${ARG_HEADERS})
   install(TARGETS rtk_kernels EXPORT rtkTargets COMPONENT rtk_kernels
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
@@ -206,20 +219,7 @@ function(rtk_add_render_package)
   add_library(rtk::render ALIAS rtk_render)
   set_target_properties(rtk_render PROPERTIES OUTPUT_NAME rtk_render EXPORT_NAME render
                                               LINKER_LANGUAGE CXX)
-  foreach(lib IN LISTS libs)
-    get_target_property(type ${lib} TYPE)
-    if(NOT type MATCHES "^(STATIC|OBJECT)_LIBRARY$")
-      continue()
-    endif()
-    target_sources(rtk_render PRIVATE $<TARGET_OBJECTS:${lib}>)
-    get_target_property(sources ${lib} SOURCES)
-    foreach(src IN LISTS sources)
-      if(src MATCHES "^\\$<TARGET_OBJECTS:")
-        target_sources(rtk_render PRIVATE ${src})
-      endif()
-    endforeach()
-    add_dependencies(rtk_render ${lib})
-  endforeach()
+  rtk_package_objects(rtk_render ${libs})
   target_include_directories(rtk_render INTERFACE
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/chapters>
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/lib>
@@ -235,17 +235,7 @@ function(rtk_add_render_package)
   if(RTK_SANITIZE)
     target_link_options(rtk_render PUBLIC -fsanitize=${RTK_SANITIZE})
   endif()
-  rtk_kernels_headers(headers ${ARG_HEADERS})
-  foreach(rel IN LISTS headers)
-    get_filename_component(dir ${rel} DIRECTORY)
-    foreach(root ${PROJECT_SOURCE_DIR}/chapters ${PROJECT_SOURCE_DIR}/lib)
-      if(EXISTS ${root}/${rel})
-        install(FILES ${root}/${rel} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rtk/${dir}
-                COMPONENT rtk_render)
-        break()
-      endif()
-    endforeach()
-  endforeach()
+  rtk_install_headers(rtk_render ${ARG_HEADERS})
   install(TARGETS rtk_render EXPORT rtkRenderTargets COMPONENT rtk_render
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   # Its own export file, so that installing the kernels' component alone stays complete;

@@ -13,25 +13,6 @@ namespace rtk::api {
 
 namespace {
 
-// A built BVH of any width and the ISA whose kernels trace it. The chapters' kernels already
-// make invalid rays miss and check the leaf layout; this class only binds the choices.
-template <class Bvh>
-class BvhBackend final : public AccelBackend {
- public:
-  BvhBackend(Bvh bvh, Isa isa) : bvh_(std::move(bvh)), isa_(isa) {}
-  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const override {
-    rtk::intersect(isa_, bvh_, rays, hits);
-  }
-  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const override {
-    rtk::occluded(isa_, bvh_, rays, occluded);
-  }
-  size_t bytes() const override { return bvh_.bytes(); }
-
- private:
-  Bvh bvh_;
-  Isa isa_;
-};
-
 // The tree: chapter 4's binned SAH builder (object splits) or chapter 5's (object and spatial
 // splits under the default 30 % duplication budget), with `sah` and `threads` threads (the
 // tree is the same for any count).

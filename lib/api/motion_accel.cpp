@@ -6,27 +6,11 @@
 #include "01_base/timer.h"
 #include "06_layouts/triangle_config.h"
 #include "08_motion/bvh4mb.h"
+#include "api/backends.h"
 
 namespace rtk {
 
 namespace {
-
-// A built BVH4MB and the ISA whose kernels trace it.
-class MotionBackend final : public AccelBackend {
- public:
-  MotionBackend(BVH4MB bvh, Isa isa) : bvh_(std::move(bvh)), isa_(isa) {}
-  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const override {
-    rtk::intersect(isa_, bvh_, rays, hits);
-  }
-  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const override {
-    rtk::occluded(isa_, bvh_, rays, occluded);
-  }
-  size_t bytes() const override { return bvh_.bytes(); }
-
- private:
-  BVH4MB bvh_;
-  Isa isa_;
-};
 
 // "bvh4mb.objectsplit" -> {"bvh4mb", "objectsplit"}.
 std::pair<std::string, std::string> split_spec(const std::string& spec) {
@@ -95,7 +79,7 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   SahBuildOptions options = motion_sah_options();
   options.threads = resolved.threads;
   Timer timer;
-  backend_ = std::make_unique<MotionBackend>(build_bvhmb<4>(std::move(mesh), tri.intersector, &options), resolved.isa);
+  backend_ = std::make_unique<api::BvhBackend<BVH4MB>>(build_bvhmb<4>(std::move(mesh), tri.intersector, &options), resolved.isa);
   info_.build_seconds = timer.seconds();
   info_.bytes = backend_->bytes();
 }

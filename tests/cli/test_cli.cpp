@@ -3,7 +3,6 @@
 // command lines fail with status 2 and a message that names the option or the file.
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -21,30 +20,17 @@
 #include "io/replay_files.h"
 #include "rays.h"
 #include "replay/ray_generator.h"
+#include "run_program.h"
 #include "scenes.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;     // the exit status
-  std::string output;  // stdout and stderr together
-};
+using Result = rtk::test::ProgramResult;
 
 // Runs `rtk ARGS` through the shell, capturing its output.
-Result run_rtk(const std::string& args) {
-  const std::string command = std::string(RTK_BINARY) + " " + args + " 2>&1";
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+Result run_rtk(const std::string& args) { return rtk::test::run_program(RTK_BINARY, args); }
 
 // A folder of its own for each test program run, removed at the end.
 struct WorkDir {

@@ -1,6 +1,5 @@
 // `rtk render` end to end: the image file it writes, its refusals and exit codes.
 #include <doctest/doctest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -11,28 +10,15 @@
 
 #include "image/image_io.h"
 #include "render_test_support.h"
+#include "run_program.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string output;
-};
+using Result = rtk::test::ProgramResult;
 
-Result run_rtk(const std::string& args) {
-  const std::string command = std::string(RTK_BINARY) + " " + args + " 2>&1";
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+Result run_rtk(const std::string& args) { return rtk::test::run_program(RTK_BINARY, args); }
 
 const std::string kCornell = std::string(RTK_SOURCE_DIR) + "/scenes/cornell_box/cornell_box.ecs";
 

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "render_kernels/choose_kernels.h"
 #include "render_test_support.h"
+#include "run_program.h"
 
 using namespace rtk;
 
@@ -99,19 +99,11 @@ TEST_CASE("ch12: -kernels embree refuses what applies only to RTK's kernels") {
 
 TEST_CASE("ch12: rtk render -kernels embree writes the image and says which kernels it used") {
   const std::string out = "rtk_render_embree_" + std::to_string(::getpid()) + ".png";
-  const std::string command = std::string(RTK_BINARY) + " render -c " + RTK_SOURCE_DIR +
-                              "/scenes/cornell_box/cornell_box.ecs -size 16 16 -spp 1 -kernels embree -o " + out +
-                              " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  char buffer[4096];
-  size_t got;
-  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, got);
-  const int status = pclose(pipe);
-  INFO(output);
-  CHECK(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 0);
-  CHECK(output.find("kernels: embree") != std::string::npos);
+  const rtk::test::ProgramResult r = rtk::test::run_program(
+      RTK_BINARY, std::string("render -c ") + RTK_SOURCE_DIR + "/scenes/cornell_box/cornell_box.ecs -size 16 16 -spp 1 "
+                  "-kernels embree -o " + out);
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK(r.output.find("kernels: embree") != std::string::npos);
   std::remove(out.c_str());
 }
