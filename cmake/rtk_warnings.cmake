@@ -7,4 +7,7 @@ if(RTK_SANITIZE)
   target_compile_options(rtk_defaults INTERFACE -fsanitize=${RTK_SANITIZE} -fno-omit-frame-pointer
                                                 -fno-sanitize-recover=all)
   target_link_options(rtk_defaults INTERFACE -fsanitize=${RTK_SANITIZE})
+  # Tests whose brute-force loops take minutes under the sanitizers trace a sample of their
+  # rays there (tests/support/sanitizer_build.h).
+  target_compile_definitions(rtk_defaults INTERFACE RTK_SANITIZER_BUILD=1)
 endif()

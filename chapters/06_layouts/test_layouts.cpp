@@ -17,6 +17,7 @@
 #include "07_intersectors/stability_meshes.h"
 #include "brute_force.h"
 #include "rays.h"
+#include "sanitizer_build.h"
 #include "scenes.h"
 
 namespace {
@@ -134,7 +135,7 @@ TEST_CASE("ch06: through BVH4 and BVH8 no ray leaks that brute force would hit")
   const TriangleMesh mesh = make_accuracy_scene().mesh;
   const std::vector<Ray> all = accuracy_inside_rays();
   std::vector<Ray> rays;
-  for (size_t i = 0; i < all.size(); i += 6) rays.push_back(all[i]);
+  for (size_t i = 0; i < all.size(); i += test::kSanitizerBuild ? 96 : 6) rays.push_back(all[i]);
   const TriangleSoA soa(mesh);
   for (const IntersectorKind kind : kAllIntersectors) {
     std::vector<Hit> brute(rays.size());
