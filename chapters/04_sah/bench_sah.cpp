@@ -383,6 +383,9 @@ void register_real_builds() {
       for (const int threads : {1, 2})
         add_build(prefix + builder_name(b) + "/threads:" + std::to_string(threads),
                   &refs[scene.name], 4, b, threads);
+    // What the rotations buy the wider tree (they cost it the most, having the most swaps).
+    for (const Builder b : {Builder::binned, Builder::binned_rotations})
+      add_build("real/bvh8/" + scene.name + "/" + builder_name(b) + "/threads:1", &refs[scene.name], 8, b, 1);
   }
 }
 
