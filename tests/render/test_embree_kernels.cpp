@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <unistd.h>
 
@@ -98,7 +99,8 @@ TEST_CASE("ch12: -kernels embree refuses what applies only to RTK's kernels") {
 }
 
 TEST_CASE("ch12: rtk render -kernels embree writes the image and says which kernels it used") {
-  const std::string out = "rtk_render_embree_" + std::to_string(::getpid()) + ".png";
+  const std::string out =
+      (std::filesystem::temp_directory_path() / ("rtk_render_embree_" + std::to_string(::getpid()) + ".png")).string();
   const rtk::test::ProgramResult r = rtk::test::run_program(
       RTK_BINARY, std::string("render -c ") + RTK_SOURCE_DIR + "/scenes/cornell_box/cornell_box.ecs -size 16 16 -spp 1 "
                   "-kernels embree -o " + out);
