@@ -103,12 +103,13 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
 
 // [ch03-prefetch]
 /// Starts loading the node or leaf that `ref` names: all the lines of an inner node (a Node8 is
-/// four), the first line of a leaf's blocks.
-template <int N>
-RTK_INLINE void prefetch_child(const BVHN<N>& bvh, const std::byte* leaf_bytes, NodeRef ref) {
+/// four), the first line of a leaf's blocks. Any BVH whose node(ref) gives its node type.
+template <class Bvh>
+RTK_INLINE void prefetch_child(const Bvh& bvh, const std::byte* leaf_bytes, NodeRef ref) {
   if (!is_leaf(ref)) {
-    const char* node = reinterpret_cast<const char*>(&bvh.node(ref));
-    for (size_t line = 0; line < sizeof(NodeN<N>); line += 64) prefetch_l1(node + line);
+    const auto& node = bvh.node(ref);
+    const char* bytes = reinterpret_cast<const char*>(&node);
+    for (size_t line = 0; line < sizeof(node); line += 64) prefetch_l1(bytes + line);
   } else {
     prefetch_l1(leaf_bytes + leaf_offset(ref));  // the empty leaf too: a hint never faults
   }

@@ -120,7 +120,8 @@ struct MotionLeaf {
 };
 
 /// Traces one motion ray through a BVHMB with chapter 3's tricks (near/far planes by sign,
-/// early pop, the 1- and 2-hit paths, sorted push, cull at pop). Returns whether a hit was
+/// early pop, the 1- and 2-hit paths, sorted push, cull at pop, prefetching, shadow rays in
+/// stored order). Returns whether a hit was
 /// found (closest hit: written to `hit`) or whether anything blocks (occlusion).
 template <int N, class Leaf, bool kOcclusion>
 bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
@@ -147,6 +148,15 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
         --sp;
         if (!kOcclusion && next.dist > tfar) goto pop;
         cur = next.ref;
+        continue;
+      }
+      // Chapter 3's two tricks beyond the guide: the hit children are prefetched, and a shadow
+      // ray visits them in stored order, keeping no distances.
+      for (int i : set_bits(mask)) prefetch_child(bvh, leaf_bytes, node.children[i]);
+      if constexpr (kOcclusion) {
+        const int first = pop_lowest_bit(mask);
+        while (mask != 0) *sp++ = {node.children[pop_highest_bit(mask)], 0.0f};
+        cur = node.children[first];
         continue;
       }
       alignas(64) float d[N];
