@@ -36,7 +36,8 @@ Handle commit_renderer(Device& device, const RenderOptions& options) {
   device.set(renderer, "seed", static_cast<int>(options.seed));
   device.set(renderer, "threads", options.threads);
   device.set(renderer, "tileSize", options.tile_size);
-  device.set(renderer, "sampler", options.sampler == SamplerType::independent ? "independent" : "sobol");
+  device.set(renderer, "sampler",
+             options.sampler == SamplerType::independent ? "independent" : "sobol");
   device.set(renderer, "filter", options.filter == FilterType::tent ? "tent" : "box");
   device.set(renderer, "filterRadius", options.filter_radius);
   device.set(renderer, "progress", options.progress ? 1 : 0);

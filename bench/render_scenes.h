@@ -19,7 +19,8 @@ namespace rtk::bench {
 inline const SceneScript& cornell_box_script() {
   static const SceneScript script = [] {
     SceneScript s;
-    read_script_file(std::filesystem::path(RTK_SOURCE_DIR) / "scenes/cornell_box/cornell_box.ecs", s);
+    read_script_file(std::filesystem::path(RTK_SOURCE_DIR) / "scenes/cornell_box/cornell_box.ecs",
+                     s);
     return s;
   }();
   return script;

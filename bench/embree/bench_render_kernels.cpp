@@ -3,7 +3,8 @@
 // run. Besides the renderer's samples/s and rays/s, the counters say how long the kernels
 // themselves took: kernel_share (their share of the tile tasks' time) and kernel_Mrays/s (rays
 // per second of time inside the ray queries alone), which is where the two differ.
-// Run: RTK_SCENES=<shared/scenes> build/bench/bench_render_kernels --benchmark_counters_tabular=true
+// Run: RTK_SCENES=<shared/scenes> build/bench/bench_render_kernels
+// --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include "12_pathtracer/render.h"
@@ -34,9 +35,11 @@ void render(benchmark::State& state, const RenderScene& scene, RenderOptions opt
     pass += static_cast<uint32_t>(spp);
   }
   state.SetItemsProcessed(static_cast<int64_t>(total.samples));  // camera samples per second
-  state.counters["Mrays/s"] = benchmark::Counter(double(total.rays) * 1e-6, benchmark::Counter::kIsRate);
+  state.counters["Mrays/s"] =
+      benchmark::Counter(double(total.rays) * 1e-6, benchmark::Counter::kIsRate);
   state.counters["kernel_share"] = total.kernel_share();
-  state.counters["kernel_Mrays/s"] = total.kernel_seconds > 0 ? double(total.rays) * 1e-6 / total.kernel_seconds : 0;
+  state.counters["kernel_Mrays/s"] =
+      total.kernel_seconds > 0 ? double(total.rays) * 1e-6 / total.kernel_seconds : 0;
   state.counters["rays/sample"] = double(total.rays) / double(total.samples);
   state.SetLabel(kernels.kernels->name());
 }
@@ -61,13 +64,18 @@ void BM_mesh(benchmark::State& state) {
     return;
   }
   static std::optional<RenderScene> scenes[2];
-  if (!scenes[state.range(1)]) scenes[state.range(1)] = bench::grey_mesh_under_sky(*path, mesh.view);
+  if (!scenes[state.range(1)])
+    scenes[state.range(1)] = bench::grey_mesh_under_sky(*path, mesh.view);
   RenderOptions options;
   options.max_depth = 8;
   render(state, *scenes[state.range(1)], options, 2);
 }
 
-BENCHMARK(BM_cornell_box)->DenseRange(0, 1)->ArgName("kernels")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_cornell_box)
+    ->DenseRange(0, 1)
+    ->ArgName("kernels")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_mesh)
     ->ArgsProduct({{0, 1}, {0, 1}})
     ->ArgNames({"kernels", "mesh"})

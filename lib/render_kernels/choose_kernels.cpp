@@ -16,8 +16,9 @@ namespace {
 #ifdef RTK_HAVE_EMBREE
 RenderKernels make_embree(const RenderScene& scene, const AccelConfig& config) {
   if (!config.accel.empty() || !config.tri.empty() || config.isa)
-    throw std::invalid_argument("-kernels embree: -accel, -tri and -isa choose RTK's structures and "
-                                "do not apply to Embree's; leave them out");
+    throw std::invalid_argument(
+        "-kernels embree: -accel, -tri and -isa choose RTK's structures and "
+        "do not apply to Embree's; leave them out");
   auto kernels = std::make_unique<EmbreeKernels>(scene, std::max(1, config.threads));
   char figures[64];
   std::snprintf(figures, sizeof figures, "; build %.3f s, %.1f MB", kernels->build_seconds(),
@@ -37,17 +38,20 @@ bool embree_kernels_available() {
 #endif
 }
 
-RenderKernels make_render_kernels(const RenderScene& scene, const AccelConfig& config, std::string_view which) {
+RenderKernels make_render_kernels(const RenderScene& scene, const AccelConfig& config,
+                                  std::string_view which) {
   if (which == "rtk") return make_rtk_kernels(scene, config);
   if (which == "embree") {
 #ifdef RTK_HAVE_EMBREE
     return make_embree(scene, config);
 #else
-    throw std::invalid_argument("-kernels embree: this build of RTK has no Embree (install Debian's "
-                                "libembree-dev and configure the build again)");
+    throw std::invalid_argument(
+        "-kernels embree: this build of RTK has no Embree (install Debian's "
+        "libembree-dev and configure the build again)");
 #endif
   }
-  throw std::invalid_argument("-kernels: unknown kernels '" + std::string(which) + "' (rtk or embree)");
+  throw std::invalid_argument("-kernels: unknown kernels '" + std::string(which) +
+                              "' (rtk or embree)");
 }
 
 KernelFactory kernel_factory(std::string which) {

@@ -23,7 +23,8 @@ bool embree_kernels_available();
 /// describe RTK's structures, and asking for them with Embree is refused rather than ignored.
 /// Throws std::invalid_argument naming -kernels for an unknown name, for Embree in a build
 /// without it, and for a moving scene on Embree.
-RenderKernels make_render_kernels(const RenderScene& scene, const AccelConfig& config, std::string_view which);
+RenderKernels make_render_kernels(const RenderScene& scene, const AccelConfig& config,
+                                  std::string_view which);
 
 /// make_render_kernels(scene, config, which) as a factory for the device API (chapter 13).
 /// Checks `which` at once, so that an unknown name fails before any scene is read.

@@ -3,12 +3,12 @@
 // nearly pixel for pixel with the same seed, and within the Monte Carlo noise with another.
 // Built only where Embree is installed; elsewhere CTest reports the test as skipped.
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "render_kernels/choose_kernels.h"
 #include "render_test_support.h"
@@ -90,20 +90,23 @@ TEST_CASE("ch12: -kernels embree refuses what applies only to RTK's kernels") {
   config.accel = "bvh4";
   CHECK_THROWS_WITH_AS(make_render_kernels(script.scene, config, "embree"),
                        doctest::Contains("-kernels embree"), std::invalid_argument);
-  CHECK_THROWS_WITH_AS(make_render_kernels(script.scene, {}, "optix"), doctest::Contains("rtk or embree"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_render_kernels(script.scene, {}, "optix"),
+                       doctest::Contains("rtk or embree"), std::invalid_argument);
   SceneScript moving = script;
   moving.scene.vertices_t1 = moving.scene.mesh.vertices;
-  CHECK_THROWS_WITH_AS(make_render_kernels(moving.scene, {}, "embree"), doctest::Contains("-kernels rtk"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_render_kernels(moving.scene, {}, "embree"),
+                       doctest::Contains("-kernels rtk"), std::invalid_argument);
 }
 
 TEST_CASE("ch12: rtk render -kernels embree writes the image and says which kernels it used") {
-  const std::string out =
-      (std::filesystem::temp_directory_path() / ("rtk_render_embree_" + std::to_string(::getpid()) + ".png")).string();
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("rtk_render_embree_" + std::to_string(::getpid()) + ".png"))
+                              .string();
   const rtk::test::ProgramResult r = rtk::test::run_program(
-      RTK_BINARY, std::string("render -c ") + RTK_SOURCE_DIR + "/scenes/cornell_box/cornell_box.ecs -size 16 16 -spp 1 "
-                  "-kernels embree -o " + out);
+      RTK_BINARY, std::string("render -c ") + RTK_SOURCE_DIR +
+                      "/scenes/cornell_box/cornell_box.ecs -size 16 16 -spp 1 "
+                      "-kernels embree -o " +
+                      out);
   INFO(r.output);
   CHECK(r.status == 0);
   CHECK(r.output.find("kernels: embree") != std::string::npos);
