@@ -134,11 +134,11 @@ bool Device::committed(const Handle& handle) const {
 
 namespace {
 
-// The current version of an object of `kind`, for render_frame and read_image.
+// The current version of an object of `kind`, for the calls that read versions (`call`).
 template <class V>
-std::shared_ptr<const V> current_version(const Object& o, ObjectKind kind, const char* role) {
+std::shared_ptr<const V> current_version(const Object& o, ObjectKind kind, const char* call, const char* role) {
   if (o.kind != kind)
-    fail(std::string("render_frame: the ") + role + " argument is a " + kind_name(o.kind) + " (" + o.describe() + ")");
+    fail(std::string(call) + ": the " + role + " argument is a " + kind_name(o.kind) + " (" + o.describe() + ")");
   std::shared_ptr<const device_detail::Version> v;
   {
     std::lock_guard lock(o.mutex);
@@ -165,11 +165,10 @@ RenderStats Device::render(const Handle& renderer, const Handle& camera, const H
                            const Handle& framebuffer, std::optional<std::pair<uint32_t, uint32_t>> samples) {
   using namespace device_detail;
   // Take the four current versions: commits made while the frame renders go to the next one.
-  const auto r = current_version<RendererVersion>(own(state_->counters, renderer, "render_frame"), ObjectKind::renderer, "renderer");
-  const auto c = current_version<CameraVersion>(own(state_->counters, camera, "render_frame"), ObjectKind::camera, "camera");
-  const auto s = current_version<SceneVersion>(own(state_->counters, scene, "render_frame"), ObjectKind::scene, "scene");
-  const auto f = current_version<FramebufferVersion>(own(state_->counters, framebuffer, "render_frame"),
-                                                     ObjectKind::framebuffer, "framebuffer");
+  const auto r = current_version<RendererVersion>(own(state_->counters, renderer, "render_frame"), ObjectKind::renderer, "render_frame", "renderer");
+  const auto c = current_version<CameraVersion>(own(state_->counters, camera, "render_frame"), ObjectKind::camera, "render_frame", "camera");
+  const auto s = current_version<SceneVersion>(own(state_->counters, scene, "render_frame"), ObjectKind::scene, "render_frame", "scene");
+  const auto f = current_version<FramebufferVersion>(own(state_->counters, framebuffer, "render_frame"), ObjectKind::framebuffer, "render_frame", "framebuffer");
   // Chapter 12's Renderer reads the camera from the scene, so the frame renders a copy of the
   // committed scene with this camera; the acceleration structure is shared, not rebuilt.
   RenderScene frame_scene = s->scene;
@@ -178,29 +177,28 @@ RenderStats Device::render(const Handle& renderer, const Handle& camera, const H
   std::lock_guard lock(f->mutex);
   options.width = f->framebuffer.width();
   options.height = f->framebuffer.height();
-  const Renderer render(frame_scene, *s->kernels, options);
-  if (samples) return render.render_pass(f->framebuffer, samples->first, samples->second);
+  const Renderer frame_renderer(frame_scene, *s->kernels, options);
+  if (samples) return frame_renderer.render_pass(f->framebuffer, samples->first, samples->second);
   f->framebuffer.clear();
-  return render.render(f->framebuffer);
+  return frame_renderer.render(f->framebuffer);
 }
 // [ch13-render-frame]
 
 std::string Device::kernels_summary(const Handle& scene) const {
   using namespace device_detail;
-  return current_version<SceneVersion>(own(state_->counters, scene, "kernels_summary"), ObjectKind::scene, "scene")
+  return current_version<SceneVersion>(own(state_->counters, scene, "kernels_summary"), ObjectKind::scene, "kernels_summary", "scene")
       ->kernels_summary;
 }
 
 std::shared_ptr<const RayKernels> Device::kernels(const Handle& scene) const {
   using namespace device_detail;
-  const auto s = current_version<SceneVersion>(own(state_->counters, scene, "kernels"), ObjectKind::scene, "scene");
+  const auto s = current_version<SceneVersion>(own(state_->counters, scene, "kernels"), ObjectKind::scene, "kernels", "scene");
   return std::shared_ptr<const RayKernels>(s, s->kernels.get());  // shares the version's ownership
 }
 
 Image Device::read_image(const Handle& framebuffer) const {
   using namespace device_detail;
-  const auto f = current_version<FramebufferVersion>(own(state_->counters, framebuffer, "read_image"),
-                                                     ObjectKind::framebuffer, "framebuffer");
+  const auto f = current_version<FramebufferVersion>(own(state_->counters, framebuffer, "read_image"), ObjectKind::framebuffer, "read_image", "framebuffer");
   std::lock_guard lock(f->mutex);
   return f->framebuffer.resolve();
 }
