@@ -134,6 +134,53 @@ RTK_INLINE void sort_pushed(BvhStackEntry* first, BvhStackEntry* end) {
   }
 }
 
+// [ch03-next-child]
+/// After a node's box test: the hit child (`mask`, not 0) the ray visits next, the other hit
+/// children pushed on the stack at `sp` in the order the tricks ask for, each with its entry
+/// distance from `dist`. Chapter 8's motion traversal makes the same choice.
+template <int N, Tricks T, bool kOcclusion>
+RTK_INLINE NodeRef next_child(const NodeRef* children, uint32_t mask, const vfloat<N>& dist,
+                              BvhStackEntry*& sp) {
+  // [ch03-stored-order]
+  // A shadow ray: the first hit child in stored order next, the others pushed so that they
+  // pop in stored order too (the highest slot deepest). No distances: nothing is culled.
+  if constexpr (kOcclusion && T.shadow_rays_in_stored_order) {
+    const int first = pop_lowest_bit(mask);
+    while (mask != 0) *sp++ = {children[pop_highest_bit(mask)], 0.0f};
+    return children[first];
+  }
+  // [ch03-stored-order]
+  alignas(64) float d[N];
+  dist.store(d);
+  const int i0 = pop_lowest_bit(mask);
+  // 1 child hit: keep going without the stack.
+  if constexpr (T.one_hit_path) {
+    if (mask == 0) return children[i0];
+  }
+  // 2 children hit: push the farther, go to the nearer.
+  if constexpr (T.two_hit_path) {
+    if (mask != 0 && (mask & (mask - 1)) == 0) {
+      const int i1 = bit_scan_forward(mask);
+      const bool swap = d[i1] < d[i0];
+      const int near = swap ? i1 : i0, far = swap ? i0 : i1;
+      *sp++ = {children[far], d[far]};
+      return children[near];
+    }
+  }
+  // More children hit (or a fast path switched off): push them all, walking the mask with bit
+  // scans, sort them nearest-on-top, and continue with the top.
+  BvhStackEntry* const first = sp;
+  *sp++ = {children[i0], d[i0]};
+  while (mask != 0) {
+    const int i = pop_lowest_bit(mask);
+    *sp++ = {children[i], d[i]};
+  }
+  if constexpr (T.sorted_push) sort_pushed(first, sp);
+  --sp;
+  return sp->ref;
+}
+// [ch03-next-child]
+
 /// The counters a statistics-mode traversal keeps; an empty shell in the fast path.
 template <bool kStats>
 struct StatsCounter {
@@ -194,52 +241,8 @@ bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kS
       if constexpr (T.prefetch_children) {
         for (int i : set_bits(mask)) prefetch_child(bvh, leaf_bytes, node.children[i]);
       }
-      // [ch03-stored-order]
-      // A shadow ray: the first hit child in stored order next, the others pushed so that they
-      // pop in stored order too (the highest slot deepest). No distances: nothing is culled.
-      if constexpr (kOcclusion && T.shadow_rays_in_stored_order) {
-        const int first = pop_lowest_bit(mask);
-        while (mask != 0) {
-          const int i = pop_highest_bit(mask);
-          *sp++ = {node.children[i], 0.0f};
-        }
-        cur = node.children[first];
-        continue;
-      }
-      // [ch03-stored-order]
-      alignas(64) float d[N];
-      dist.store(d);
-      const int i0 = pop_lowest_bit(mask);
-
-      // 1 child hit: keep going without the stack.
-      if constexpr (T.one_hit_path) {
-        if (mask == 0) {
-          cur = node.children[i0];
-          continue;
-        }
-      }
-      // 2 children hit: push the farther, go to the nearer.
-      if constexpr (T.two_hit_path) {
-        if (mask != 0 && (mask & (mask - 1)) == 0) {
-          const int i1 = bit_scan_forward(mask);
-          const bool swap = d[i1] < d[i0];
-          const int near = swap ? i1 : i0, far = swap ? i0 : i1;
-          *sp++ = {node.children[far], d[far]};
-          cur = node.children[near];
-          continue;
-        }
-      }
-      // More children hit (or a fast path switched off): push them all, walking the mask with
-      // bit scans, sort them nearest-on-top, and continue with the top.
-      BvhStackEntry* const first = sp;
-      *sp++ = {node.children[i0], d[i0]};
-      while (mask != 0) {
-        const int i = pop_lowest_bit(mask);
-        *sp++ = {node.children[i], d[i]};
-      }
-      if constexpr (T.sorted_push) sort_pushed(first, sp);
-      --sp;
-      cur = sp->ref;
+      // 1, 2 or more children hit.
+      cur = next_child<N, T, kOcclusion>(node.children, mask, dist, sp);
     }
     // [ch03-descend]
     if (cur == kTerminal) break;

@@ -7,7 +7,6 @@
 
 #include <array>
 #include <atomic>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -50,10 +49,8 @@ class Builder {
   using Node = typename Tree::Node;
   using Child = typename Tree::Child;
 
-  /// The node depth from which nodes are filled by median splits: what is left below, at most
-  /// log_N(2^32) + 1 levels, then fits in chapter 3's 64-level traversal stacks.
-  static constexpr int kLog2N = std::bit_width(unsigned(N) - 1);
-  static constexpr int kMedianDepth = 64 - (32 + kLog2N - 1) / kLog2N - 1;
+  /// Past this node depth nodes are filled by median splits (chapter 4's bound).
+  static constexpr int kMedianDepth = kMedianFillDepth<N>;
 
   Builder(PrimRef* refs, const SahBuildOptions& options, Counters& counters)
       : refs_(refs), options_(options), counters_(counters) {}

@@ -33,6 +33,16 @@ inline constexpr uint32_t kSmallJobPrims = 1u << 12;
 inline constexpr uint32_t kPartitionBlockPrims = 1u << 12;
 // [ch04-granularity]
 
+/// The node depth (the root at 1) from which an N-wide tree's nodes are filled by median splits:
+/// the levels left below, at most log_N(2^32) + 1, then fit in chapter 3's 64-level traversal
+/// stacks whatever the SAH did above. Chapter 5's builder keeps to the same bound.
+template <int N>
+inline constexpr int kMedianFillDepth = [] {
+  int log2n = 0;
+  while ((1 << log2n) < N) ++log2n;  // ceil(log2 N)
+  return 64 - (32 + log2n - 1) / log2n - 1;
+}();
+
 /// How many bottom-up rounds of tree rotations a small job makes; a round that finds nothing to
 /// improve ends them early.
 inline constexpr int kRotationRounds = 3;

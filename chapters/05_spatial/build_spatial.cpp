@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -76,10 +75,8 @@ class Builder {
   using Node = typename Tree::Node;
   using Child = typename Tree::Child;
 
-  /// As in chapter 4: past this node depth, nodes are filled by median splits, so that the
-  /// tree fits the traversal stacks whatever the SAH did above.
-  static constexpr int kLog2N = std::bit_width(unsigned(N) - 1);
-  static constexpr int kMedianDepth = 64 - (32 + kLog2N - 1) / kLog2N - 1;
+  /// Past this node depth nodes are filled by median splits (chapter 4's bound).
+  static constexpr int kMedianDepth = kMedianFillDepth<N>;
 
   Builder(const TriangleMesh& mesh, const SpatialBuildOptions& options, double root_area,
           Counters& counters)

@@ -150,42 +150,10 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
         cur = next.ref;
         continue;
       }
-      // Chapter 3's two tricks beyond the guide: the hit children are prefetched, and a shadow
-      // ray visits them in stored order, keeping no distances.
+      // The hit children are prefetched, and chapter 3 chooses the next one and what to push
+      // (shadow rays in stored order, closest hits nearest first), with all its tricks on.
       for (int i : set_bits(mask)) prefetch_child(bvh, leaf_bytes, node.children[i]);
-      if constexpr (kOcclusion) {
-        const int first = pop_lowest_bit(mask);
-        while (mask != 0) *sp++ = {node.children[pop_highest_bit(mask)], 0.0f};
-        cur = node.children[first];
-        continue;
-      }
-      alignas(64) float d[N];
-      dist.store(d);
-      const int i0 = pop_lowest_bit(mask);
-      // 1 child hit.
-      if (mask == 0) {
-        cur = node.children[i0];
-        continue;
-      }
-      // 2 children hit: push the farther, go to the nearer.
-      if ((mask & (mask - 1)) == 0) {
-        const int i1 = bit_scan_forward(mask);
-        const bool swap = d[i1] < d[i0];
-        const int near = swap ? i1 : i0, far = swap ? i0 : i1;
-        *sp++ = {node.children[far], d[far]};
-        cur = node.children[near];
-        continue;
-      }
-      // More: push them all, nearest on top.
-      BvhStackEntry* const first = sp;
-      *sp++ = {node.children[i0], d[i0]};
-      while (mask != 0) {
-        const int i = pop_lowest_bit(mask);
-        *sp++ = {node.children[i], d[i]};
-      }
-      sort_pushed(first, sp);
-      --sp;
-      cur = sp->ref;
+      cur = next_child<N, Tricks{}, kOcclusion>(node.children, mask, dist, sp);
     }
     if (cur == kTerminal) break;
     {
