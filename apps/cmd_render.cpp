@@ -39,10 +39,6 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   }
   RenderOptions& options = script.options;
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  script.accel.threads = options.threads;
-  // A static scene's configuration for RTK's kernels is checked before the build (a moving
-  // scene's is checked by the motion structure's own rules when it is built).
-  if (script.kernels == "rtk" && !script.scene.has_motion()) resolve_config(script.accel);
 
   if (script.scene.lights.empty() && !options.eye_light)
     std::fprintf(stderr, "rtk render: warning: the scene has no light; the image will be black "

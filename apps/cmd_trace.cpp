@@ -64,27 +64,24 @@ int run_trace(std::span<const std::string_view> args) {
 
   // Step 2: the rays (a damaged file is refused before the scene is read) and the scene.
   const std::vector<Ray> rays = read_rays(rays_file);
-  Timer timer;
-  const TriangleMesh mesh = load_obj(scene);
-  JsonLine()
-      .add("op", "load")
-      .add("file", scene)
-      .add("vertices", mesh.vertices.size())
-      .add("triangles", mesh.size())
-      .add("seconds", timer.seconds())
-      .print();
-  TriangleMesh mesh1;
-  if (!motion_scene.empty()) {
-    timer.reset();
-    mesh1 = load_obj(motion_scene);
-    check_motion_meshes(mesh, mesh1, scene, motion_scene);
+  // Each scene file is loaded and reported as one JSON line.
+  auto load = [](const std::string& file) {
+    Timer timer;
+    TriangleMesh mesh = load_obj(file);
     JsonLine()
         .add("op", "load")
-        .add("file", motion_scene)
-        .add("vertices", mesh1.vertices.size())
-        .add("triangles", mesh1.size())
+        .add("file", file)
+        .add("vertices", mesh.vertices.size())
+        .add("triangles", mesh.size())
         .add("seconds", timer.seconds())
         .print();
+    return mesh;
+  };
+  const TriangleMesh mesh = load(scene);
+  TriangleMesh mesh1;
+  if (!motion_scene.empty()) {
+    mesh1 = load(motion_scene);
+    check_motion_meshes(mesh, mesh1, scene, motion_scene);
   }
 
   // Step 3: build, -repeat times; the last structure is kept.
@@ -115,7 +112,7 @@ int run_trace(std::span<const std::string_view> args) {
   std::vector<Hit> hits(want_hits ? rays.size() : 0);
   std::vector<uint8_t> occluded(want_occl ? rays.size() : 0);
   for (size_t r = 0; r < repeat; ++r) {
-    timer.reset();
+    const Timer timer;
     if (want_hits) accel->intersect(rays, hits);
     else accel->occluded(rays, occluded);
     trace_seconds.push_back(timer.seconds());

@@ -258,7 +258,6 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   RenderOptions options = script.options;
   options.progress = false;
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  if (script.kernels == "rtk" && !script.scene.has_motion()) resolve_config(script.accel);
   Device device([](const std::string& w) { std::fprintf(stderr, "rtk view: warning: %s\n", w.c_str()); },
                 kernel_factory(script.kernels));
   const Handle scene = commit_scene(device, script, options.threads);
