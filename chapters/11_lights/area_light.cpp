@@ -76,8 +76,8 @@ float TriangleLight::pdf_li(const LightQuery& q, Vec3f wi) const {
 
 Color TriangleLight::power(float) const { return radiance_ * (kPi * area_); }
 
-std::vector<std::shared_ptr<TriangleLight>> make_quad_light(Vec3f p, Vec3f u, Vec3f v,
-                                                            Color radiance) {
+std::vector<std::shared_ptr<const TriangleLight>> make_quad_light(Vec3f p, Vec3f u, Vec3f v,
+                                                                  Color radiance) {
   return {std::make_shared<TriangleLight>(p + u + v, p + u, p, radiance),
           std::make_shared<TriangleLight>(p + u + v, p, p + v, radiance)};
 }

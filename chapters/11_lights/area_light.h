@@ -52,7 +52,7 @@ class TriangleLight final : public Light {
 
 /// The guide's -quadlight P U V L: the two triangles (P+U+V, P+U, P) and (P+U+V, P, P+V),
 /// both emitting on the side of cross(U, V).
-std::vector<std::shared_ptr<TriangleLight>> make_quad_light(Vec3f p, Vec3f u, Vec3f v,
-                                                            Color radiance);
+std::vector<std::shared_ptr<const TriangleLight>> make_quad_light(Vec3f p, Vec3f u, Vec3f v,
+                                                                  Color radiance);
 
 }  // namespace rtk

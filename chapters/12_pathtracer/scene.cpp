@@ -15,6 +15,16 @@ void RenderScene::add_light(std::shared_ptr<const Light> light) {
   lights.push_back(std::move(light));
 }
 
+void RenderScene::add_area_light(std::span<const std::shared_ptr<const TriangleLight>> triangles,
+                                 Color radiance) {
+  Material m;
+  m.name = "light";
+  m.prototype = Lambertian{Color(0.0f)};
+  m.emission = radiance;
+  const uint32_t material = add_material(std::move(m));
+  for (const auto& t : triangles) add_triangle_light(t, material);
+}
+
 uint32_t RenderScene::add_triangle_light(std::shared_ptr<const TriangleLight> light,
                                          uint32_t material) {
   if (!light) throw std::invalid_argument("add_triangle_light: null light");

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "01_base/triangle_mesh.h"
@@ -55,6 +56,9 @@ struct RenderScene {
   /// material `material` (whose emission should match the light's radiance), so that rays can
   /// hit it. Returns the triangle's primID. In a scene with motion the light stands still.
   uint32_t add_triangle_light(std::shared_ptr<const TriangleLight> light, uint32_t material);
+  /// Adds an area light made of `triangles`, all of radiance `radiance`: one emitting,
+  /// otherwise black material for all of them, and each triangle as add_triangle_light() adds it.
+  void add_area_light(std::span<const std::shared_ptr<const TriangleLight>> triangles, Color radiance);
 
   /// Throws std::invalid_argument naming the first inconsistency: an attribute vector of the
   /// wrong length, a vertex, material or light index out of range, a triangle_light that is

@@ -285,8 +285,7 @@ std::shared_ptr<const Version> build_light(const Object& o, const ParamReader& p
                                                              p.require_vec3("v2"), v->radiance));
     } else if (t == "quad") {
       v->radiance = color_of(p.require_vec3("L"));
-      for (auto& l : make_quad_light(p.require_vec3("P"), p.require_vec3("U"), p.require_vec3("V"), v->radiance))
-        v->triangles.push_back(std::move(l));
+      v->triangles = make_quad_light(p.require_vec3("P"), p.require_vec3("U"), p.require_vec3("V"), v->radiance);
     } else {  // environment
       if (!p.has("filename")) p.fail("filename", "required");
       const Color scale = color_of(p.get_vec3("L", {1, 1, 1}));
@@ -413,12 +412,7 @@ std::shared_ptr<const Version> build_scene(const Object& o, const ParamReader& p
       sc.add_light(l.light);
       continue;
     }
-    Material m;
-    m.name = "light";
-    m.prototype = Lambertian{Color(0.0f)};
-    m.emission = l.radiance;
-    const uint32_t material = sc.add_material(std::move(m));
-    for (const auto& t : l.triangles) sc.add_triangle_light(t, material);
+    sc.add_area_light(l.triangles, l.radiance);
   }
   if (sc.mesh.triangles.empty()) p.fail("shapes", "the scene has no triangles (give it at least one shape)");
   try {

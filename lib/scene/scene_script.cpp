@@ -108,15 +108,6 @@ class ScriptReader {
       fail(option.where, option.text + ": " + e.what());
     }
   }
-  void add_area_light(const std::vector<std::shared_ptr<TriangleLight>>& lights, Color radiance) {
-    Material m;
-    m.name = "light";
-    m.prototype = Lambertian{Color(0.0f)};
-    m.emission = radiance;
-    const uint32_t material = s_.scene.add_material(std::move(m));
-    for (const auto& light : lights) s_.scene.add_triangle_light(light, material);
-  }
-
   void include(const Token& option) {
     const std::filesystem::path path = file(option);
     if (depth_ + 1 >= kMaxInclude)
@@ -271,8 +262,12 @@ class ScriptReader {
       const Vec3f p = vec3(o), u = vec3(o), v = vec3(o);
       const Color l = color(o);
       at(o, [&] {
-        if (name == "-quadlight") add_area_light(make_quad_light(p, u, v, l), l);
-        else add_area_light({std::make_shared<TriangleLight>(p, p + u, p + v, l)}, l);
+        if (name == "-quadlight") {
+          sc.add_area_light(make_quad_light(p, u, v, l), l);
+        } else {
+          const std::shared_ptr<const TriangleLight> t = std::make_shared<TriangleLight>(p, p + u, p + v, l);
+          sc.add_area_light({&t, 1}, l);
+        }
       });
     } else if (name == "-hdrilight") {
       const Color l = color(o);

@@ -439,15 +439,13 @@ class XmlReader {
         scene_.add_light(std::make_shared<AmbientLight>(color("L")));
       } else if (name == "TriangleLight" || name == "QuadLight") {
         const Color l = color("L");
-        Material m;
-        m.name = "light";
-        m.prototype = Lambertian{Color(0.0f)};
-        m.emission = l;
-        const uint32_t material = scene_.add_material(std::move(m));
-        if (name == "QuadLight")
-          for (auto& t : make_quad_light(space.p, space.c0, space.c1, l)) scene_.add_triangle_light(t, material);
-        else
-          scene_.add_triangle_light(std::make_shared<TriangleLight>(space.p, space.p + space.c0, space.p + space.c1, l), material);
+        if (name == "QuadLight") {
+          scene_.add_area_light(make_quad_light(space.p, space.c0, space.c1, l), l);
+        } else {
+          const std::shared_ptr<const TriangleLight> t =
+              std::make_shared<TriangleLight>(space.p, space.p + space.c0, space.p + space.c1, l);
+          scene_.add_area_light({&t, 1}, l);
+        }
       } else {  // HDRILight: the map's x, z, y axes along the space's columns
         const std::filesystem::path file = path_.parent_path() / quoted(require(n, "image"));
         const Frame frame(normalize(space.c0), normalize(space.c2), normalize(space.c1));
