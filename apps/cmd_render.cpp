@@ -1,12 +1,12 @@
 // `rtk render`: reads the guide's options (command scripts with -c, then the command line
-// itself, left to right), hands the scene to chapter 13's device, which builds the kernels the
-// scene needs, renders a frame with chapter 12's path tracer and writes every -o image. Also
+// itself, left to right), hands the scene to chapter 14's device, which builds the kernels the
+// scene needs, renders a frame with chapter 13's path tracer and writes every -o image. Also
 // the guide's short form `rtk -c scene.ecs -o out.png`.
 #include <cstdio>
 #include <string>
 #include <thread>
 
-#include "13_device/device.h"
+#include "14_device/device.h"
 #include "commands.h"
 #include "device_objects.h"
 #include "image/image_io.h"
@@ -21,10 +21,10 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   // Step 1: the scene and options, scripts and command line read left to right.
   SceneScript script;
   script.options.progress = true;
-  ViewerOptions viewer;  // -frames, -screenshot: the viewer's own (chapter 14)
+  ViewerOptions viewer;  // -frames, -screenshot: the viewer's own (chapter 15)
   const std::vector<std::string_view> script_args = take_viewer_options(args, viewer);
   read_script_args(script_args, script, [](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); });
-  // No -o: the guide's interactive mode, the viewer (chapter 14), for `rtk -c` and `rtk view`.
+  // No -o: the guide's interactive mode, the viewer (chapter 15), for `rtk -c` and `rtk view`.
   if (script.outputs.empty() && viewer_without_output) return run_viewer(script, viewer);
   if (script.outputs.empty())
     throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm); "
@@ -44,7 +44,7 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
     std::fprintf(stderr, "rtk render: warning: the scene has no light; the image will be black "
                          "(add one, e.g. -ambientlight 1 1 1, or use -renderer debug)\n");
 
-  // Step 2: the device (chapter 13), whose scenes are traced by the kernels -kernels names,
+  // Step 2: the device (chapter 14), whose scenes are traced by the kernels -kernels names,
   // and the script's scene imported into it: the commit builds what the scene needs (RTK's
   // motion structure only if it moves).
   Device device([](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); },

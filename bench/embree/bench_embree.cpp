@@ -26,12 +26,12 @@
 #include <vector>
 
 #include "01_base/timer.h"
-#include "api/accel.h"
+#include "09_kernel_api/accel.h"
 #include "embree/embree_scene.h"
 #include "io/obj_loader.h"
 #include "replay/compare.h"
 #include "replay/ray_generator.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include "io/obj_loader.h"
 #include "io/obj_writer.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "01_base/slab_kernels.h"
-#include "rays.h"
+#include "01_base/ray_sets.h"
 
 using namespace rtk;
 

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "01_base/cpu_features.h"
-#include "brute_force.h"
-#include "rays.h"
-#include "scenes.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/scenes.h"
 
 namespace rtk::test {
 

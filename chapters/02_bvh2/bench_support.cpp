@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace rtk::bench {
 

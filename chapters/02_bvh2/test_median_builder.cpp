@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "02_bvh2/median_builder.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 using namespace rtk;
 

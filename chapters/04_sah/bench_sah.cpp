@@ -28,7 +28,7 @@
 #include "02_bvh2/median_builder.h"
 #include "03_bvh4/bvh4.h"
 #include "04_sah/build_sah.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 // Peak memory: every operator new and delete of the program goes through these counters, so a
 // benchmark can ask how many bytes a build held at most beyond what existed before it.

@@ -11,7 +11,7 @@
 
 #include "04_sah/binning.h"
 #include "04_sah/partition.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -10,9 +10,9 @@
 
 #include "04_sah/build_sah.h"
 #include "04_sah/tree_checks.h"
-#include "brute_force.h"
-#include "rays.h"
-#include "scenes.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/scenes.h"
 
 namespace {
 

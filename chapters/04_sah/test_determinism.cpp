@@ -10,7 +10,7 @@
 
 #include "04_sah/build_sah.h"
 #include "04_sah/tree_checks.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -11,9 +11,9 @@
 #include "02_bvh2/median_builder.h"
 #include "03_bvh4/bvh4.h"
 #include "04_sah/build_sah.h"
-#include "brute_force.h"
-#include "rays.h"
-#include "scenes.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "04_sah/build_sah.h"
 #include "05_spatial/architecture_scene.h"
 #include "05_spatial/build_spatial.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include "03_bvh4/bvh4.h"
 #include "04_sah/build_sah.h"
 #include "05_spatial/build_spatial.h"
-#include "brute_force.h"
-#include "rays.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
 #include "test_support_ch05.h"
 
 namespace {

@@ -12,7 +12,7 @@
 #include "02_bvh2/build_tree.h"
 #include "05_spatial/architecture_scene.h"
 #include "05_spatial/spatial_options.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace rtk::test {
 

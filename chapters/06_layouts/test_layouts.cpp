@@ -15,10 +15,10 @@
 #include "07_intersectors/accuracy_scene.h"
 #include "07_intersectors/intersect_all.h"
 #include "07_intersectors/stability_meshes.h"
-#include "brute_force.h"
-#include "rays.h"
-#include "sanitizer_build.h"
-#include "scenes.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/sanitizer_build.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "07_intersectors/accuracy_scene.h"
 #include "07_intersectors/intersect_all.h"
 #include "07_intersectors/stability_meshes.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 using namespace rtk;
 

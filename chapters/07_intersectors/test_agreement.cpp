@@ -12,9 +12,9 @@
 
 #include "07_intersectors/test_support_ch07.h"
 #include "07_intersectors/zero_area.h"
-#include "brute_force.h"
-#include "rays.h"
-#include "scenes.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/scenes.h"
 
 namespace {
 

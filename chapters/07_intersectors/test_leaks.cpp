@@ -13,8 +13,8 @@
 #include "07_intersectors/accuracy_scene.h"
 #include "07_intersectors/stability_meshes.h"
 #include "07_intersectors/test_support_ch07.h"
-#include "sanitizer_build.h"
-#include "scenes.h"
+#include "testing/sanitizer_build.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -21,7 +21,7 @@
 #include "02_bvh2/bench_support.h"
 #include "06_layouts/layout_build.h"
 #include "08_motion/bvh4mb.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 using namespace rtk;
 

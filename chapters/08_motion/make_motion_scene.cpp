@@ -11,7 +11,7 @@
 
 #include "01_base/triangle_mesh.h"
 #include "io/obj_writer.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 using namespace rtk;
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "08_motion/motion_mesh.h"
-#include "brute_force.h"
-#include "rays.h"
-#include "scenes.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/scenes.h"
 
 namespace rtk::test {
 

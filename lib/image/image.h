@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "09_sampling/color.h"
+#include "01_base/color.h"
 
 namespace rtk {
 

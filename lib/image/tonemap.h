@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "09_sampling/color.h"
+#include "01_base/color.h"
 
 namespace rtk {
 

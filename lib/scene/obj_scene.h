@@ -12,7 +12,7 @@
 ///   about and gets the default grey Matte); `mtllib FILE...` reads MTL files, relative to the
 ///   OBJ file's folder;
 /// - MTL: `newmtl`, `Kd Ks Ka Ke Tf` (three numbers, or one for a grey), `Ns Ni d Tr illum`,
-///   `map_Kd FILE` (a texture, sRGB-decoded); they become chapter 10's "OBJ" material through
+///   `map_Kd FILE` (a texture, sRGB-decoded); they become chapter 11's "OBJ" material through
 ///   make_material, whose warnings say what is approximated. A material with a non-zero `Ke`
 ///   emits: each of its triangles becomes a TriangleLight shining on the side its corners
 ///   turn counter-clockwise toward (the OBJ front face). Other keys (map_Ks, bump, ...) are
@@ -24,8 +24,8 @@
 #include <functional>
 #include <string>
 
-#include "10_materials/material.h"
-#include "12_pathtracer/scene.h"
+#include "11_materials/material.h"
+#include "13_pathtracer/scene.h"
 
 namespace rtk {
 

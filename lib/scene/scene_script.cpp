@@ -5,10 +5,10 @@
 #include <memory>
 #include <stdexcept>
 
-#include "11_lights/area_light.h"
-#include "11_lights/distant_light.h"
-#include "11_lights/environment_light.h"
-#include "11_lights/point_light.h"
+#include "12_lights/area_light.h"
+#include "12_lights/distant_light.h"
+#include "12_lights/environment_light.h"
+#include "12_lights/point_light.h"
 #include "io/read_file.h"
 #include "scene/obj_scene.h"
 #include "scene/parse_number.h"

@@ -23,10 +23,10 @@
 #include <string_view>
 #include <vector>
 
-#include "10_materials/material.h"
-#include "12_pathtracer/render.h"
-#include "12_pathtracer/scene.h"
-#include "api/accel.h"
+#include "11_materials/material.h"
+#include "13_pathtracer/render.h"
+#include "13_pathtracer/scene.h"
+#include "09_kernel_api/accel.h"
 #include "image/tonemap.h"
 
 namespace rtk {

@@ -11,11 +11,11 @@
 #include <set>
 #include <sstream>
 
-#include "11_lights/area_light.h"
-#include "11_lights/distant_light.h"
-#include "11_lights/environment_light.h"
-#include "11_lights/point_light.h"
-#include "13_device/sphere_mesh.h"
+#include "12_lights/area_light.h"
+#include "12_lights/distant_light.h"
+#include "12_lights/environment_light.h"
+#include "12_lights/point_light.h"
+#include "14_device/sphere_mesh.h"
 #include "io/file_error.h"
 #include "io/read_file.h"
 #include "scene/obj_scene.h"

@@ -1,15 +1,15 @@
 /// \file
-/// The Embree scene graph in XML (FORMATS.md section 2), read into chapter 12's RenderScene.
+/// The Embree scene graph in XML (FORMATS.md section 2), read into chapter 13's RenderScene.
 ///
 /// Read: `<scene>`, `<Group>`, `<Transform>` (its first child an `<AffineSpace>`: a body of 12
 /// numbers, a 3x4 row-major matrix whose last column is the translation, or one of the
 /// attributes translate, scale, rotate_x, rotate_y, rotate_z, rotate + axis), `<TriangleMesh>`
 /// (positions, optional motions (p(t) = p + t m), normals, texcoords, triangles, material),
 /// `<Sphere>` (position, radius, numTheta, numPhi, optional motion, material; tessellated as
-/// chapter 13's tessellate_sphere), lights (`<PointLight>`, `<SpotLight>` approximated by a
+/// chapter 14's tessellate_sphere), lights (`<PointLight>`, `<SpotLight>` approximated by a
 /// point light, `<DirectionalLight>`, `<DistantLight>`, `<AmbientLight>`, `<TriangleLight>`,
 /// `<QuadLight>`, `<HDRILight>`), materials (`<material>` with `<code>` and `<parameters>`,
-/// made by chapter 10's make_material, which warns about what it approximates), reuse
+/// made by chapter 11's make_material, which warns about what it approximates), reuse
 /// (`<assign type="material|scene" id>`, `<material id/>`, `<ref id/>`), inclusion (`<obj
 /// src>`, `<xml src>`, `<extern src>`, `<material file>`), and binary arrays (`ofs`, `size`)
 /// from the side file (`scene.bin`, then `scene.xml.bin`). The 2.x cameras are ignored with a
@@ -19,8 +19,8 @@
 
 #include <filesystem>
 
-#include "10_materials/material.h"
-#include "12_pathtracer/scene.h"
+#include "11_materials/material.h"
+#include "13_pathtracer/scene.h"
 
 namespace rtk {
 

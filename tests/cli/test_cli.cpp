@@ -12,17 +12,17 @@
 #include <string>
 #include <vector>
 
-#include "api/accel.h"
-#include "brute_force.h"
+#include "09_kernel_api/accel.h"
+#include "testing/brute_force.h"
 #include "io/obj_loader.h"
 #include "io/obj_writer.h"
 #include "io/read_file.h"
 #include "io/replay_files.h"
-#include "rays.h"
+#include "01_base/ray_sets.h"
 #include "replay/ray_generator.h"
-#include "run_program.h"
-#include "sanitizer_build.h"
-#include "scenes.h"
+#include "testing/run_program.h"
+#include "testing/sanitizer_build.h"
+#include "testing/scenes.h"
 
 namespace {
 

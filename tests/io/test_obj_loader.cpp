@@ -11,7 +11,7 @@
 #include "io/obj_loader.h"
 #include "io/obj_writer.h"
 #include "io/read_file.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 
 #include "io/replay_files.h"
 #include "replay/ray_generator.h"
-#include "scenes.h"
+#include "testing/scenes.h"
 
 namespace {
 

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <string>
 
-#include "09_sampling/warp.h"
-#include "12_pathtracer/render.h"
-#include "12_pathtracer/scene.h"
+#include "10_sampling/warp.h"
+#include "13_pathtracer/render.h"
+#include "13_pathtracer/scene.h"
 #include "image/image.h"
-#include "render_kernels/accel_kernels.h"
+#include "13_pathtracer/accel_kernels.h"
 #include "scene/scene_script.h"
 
 namespace rtk::test {

@@ -9,7 +9,7 @@
 
 #include "image/image_io.h"
 #include "render_test_support.h"
-#include "run_program.h"
+#include "testing/run_program.h"
 
 namespace fs = std::filesystem;
 
@@ -23,7 +23,7 @@ const std::string kCornell = std::string(RTK_SOURCE_DIR) + "/scenes/cornell_box/
 
 }  // namespace
 
-TEST_CASE("ch12: rtk render writes a PNG of the size asked for") {
+TEST_CASE("ch13: rtk render writes a PNG of the size asked for") {
   const fs::path out = fs::temp_directory_path() / ("rtk_render_cli_" + std::to_string(getpid()) + ".png");
   const Result r = run_rtk("render -c " + kCornell + " -size 24 16 -spp 2 -threads 2 -o " + out.string());
   INFO(r.output);
@@ -45,10 +45,10 @@ TEST_CASE("ch12: rtk render writes a PNG of the size asked for") {
   fs::remove(out);
 }
 
-TEST_CASE("ch12: rtk render goes through the device and writes chapter 12's image, bit for bit") {
-  // The command hands the script's scene to chapter 13's device, which renders from committed
+TEST_CASE("ch13: rtk render goes through the device and writes chapter 13's image, bit for bit") {
+  // The command hands the script's scene to chapter 14's device, which renders from committed
   // versions; a PFM file keeps the linear floats, so the file must hold exactly the image that
-  // chapter 12's renderer makes of the same scene and options in this process.
+  // chapter 13's renderer makes of the same scene and options in this process.
   const fs::path out = fs::temp_directory_path() / ("rtk_render_device_" + std::to_string(getpid()) + ".pfm");
   const Result r = run_rtk("render -c " + kCornell + " -size 20 14 -spp 3 -seed 5 -threads 2 -o " + out.string());
   INFO(r.output);
@@ -67,7 +67,7 @@ TEST_CASE("ch12: rtk render goes through the device and writes chapter 12's imag
   CHECK(differ == 0);
 }
 
-TEST_CASE("ch12: rtk render refuses what it cannot do, with exit status 2") {
+TEST_CASE("ch13: rtk render refuses what it cannot do, with exit status 2") {
   const Result no_output = run_rtk("render -c " + kCornell + " -size 8 8");
   CHECK(no_output.status == 2);
   CHECK(no_output.output.find("-o") != std::string::npos);

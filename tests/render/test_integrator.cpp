@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "11_lights/distant_light.h"
+#include "12_lights/distant_light.h"
 #include "render_test_support.h"
 
 using namespace rtk;
@@ -31,7 +31,7 @@ RenderScene furnace_scene(bool concave) {
 
 }  // namespace
 
-TEST_CASE("ch12: white furnace, convex: every pixel is exactly 1") {
+TEST_CASE("ch13: white furnace, convex: every pixel is exactly 1") {
   // A white Lambertian sphere under a uniform white sky. Light sampling (cosine around the
   // normal) and BSDF sampling (cosine too) have the same density, so each takes MIS weight
   // 1/2 and each estimates exactly 1/2: no noise at all, any error is a bias (a wrong MIS
@@ -47,7 +47,7 @@ TEST_CASE("ch12: white furnace, convex: every pixel is exactly 1") {
   }
 }
 
-TEST_CASE("ch12: white furnace, concave: the mean is 1 within the noise") {
+TEST_CASE("ch13: white furnace, concave: the mean is 1 within the noise") {
   // Surfaces of albedo 1 in a sky of radiance 1 reflect exactly what they receive, so every
   // pixel's expected value is 1, however often light bounces (Russian roulette keeps the
   // estimate unbiased). The noise bound: the P pixels are independent estimates (their
@@ -75,7 +75,7 @@ TEST_CASE("ch12: white furnace, concave: the mean is 1 within the noise") {
   CHECK(std::fabs(mean - 1.0) <= bound);
 }
 
-TEST_CASE("ch12: images are identical for 1 and 2 threads and for split passes") {
+TEST_CASE("ch13: images are identical for 1 and 2 threads and for split passes") {
   SceneScript script = test::cornell_box();
   RenderOptions options = script.options;
   options.width = 40;
@@ -111,7 +111,7 @@ TEST_CASE("ch12: images are identical for 1 and 2 threads and for split passes")
   CHECK_FALSE(other.resolve().pixels == a.pixels);
 }
 
-TEST_CASE("ch12: the Cornell box converges like 1/sqrt(spp)") {
+TEST_CASE("ch13: the Cornell box converges like 1/sqrt(spp)") {
   // RMS error against a 128-spp reference (another seed, so that its samples are not the
   // test images' own) at 1, 4 and 16 spp. Independent samples: error ~ spp^-1/2. The
   // reference's own noise adds var/128 to var/spp, which flattens the fitted slope to about
@@ -155,7 +155,7 @@ TEST_CASE("ch12: the Cornell box converges like 1/sqrt(spp)") {
   CHECK(slope > -0.65);
 }
 
-TEST_CASE("ch12: renderer refuses bad options") {
+TEST_CASE("ch13: renderer refuses bad options") {
   RenderScene scene = furnace_scene(false);
   const AccelKernels kernels(scene, {});
   RenderOptions bad;
@@ -172,7 +172,7 @@ TEST_CASE("ch12: renderer refuses bad options") {
   CHECK_THROWS_WITH_AS(Renderer(scene, kernels, bad), doctest::Contains("material"), std::invalid_argument);
 }
 
-TEST_CASE("ch12: every ISA's kernels render the image the scalar kernels render") {
+TEST_CASE("ch13: every ISA's kernels render the image the scalar kernels render") {
   // The same layout and intersector in every variant: the random numbers depend only on the
   // pixel and sample, so paths differ only where a hit differs in its last bits, which moves
   // a bounce's origin by ulps. Pixels may then differ slightly, never the picture.

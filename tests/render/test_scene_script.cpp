@@ -10,7 +10,9 @@
 
 #include "io/file_error.h"
 #include "render_test_support.h"
+#include "15_viewer/orbit_camera.h"
 #include "scene/obj_scene.h"
+#include "scene/scene_script.h"
 
 using namespace rtk;
 namespace fs = std::filesystem;
@@ -60,7 +62,7 @@ void expect_error(const TempDir& dir, const std::string& script, const std::stri
 
 }  // namespace
 
-TEST_CASE("ch12: a valid script loads geometry, materials, lights, camera and options") {
+TEST_CASE("ch13: a valid script loads geometry, materials, lights, camera and options") {
   TempDir dir;
   dir.write("box.obj", kObj);
   dir.write("box.mtl", kMtl);
@@ -105,7 +107,7 @@ TEST_CASE("ch12: a valid script loads geometry, materials, lights, camera and op
   CHECK(s.options.width == 8);
 }
 
-TEST_CASE("ch12: the Embree 1.1 Cornell box script loads unmodified") {
+TEST_CASE("ch13: the Embree 1.1 Cornell box script loads unmodified") {
   const char* root = std::getenv("RTK_SCENES");
   const fs::path path = fs::path(root ? root : "/work/shared/scenes") / "embree_models/v1.1_release_2012/cornell_box.ecs";
   if (!fs::exists(path)) {
@@ -124,7 +126,7 @@ TEST_CASE("ch12: the Embree 1.1 Cornell box script loads unmodified") {
   CHECK(sum > 0.0);
 }
 
-TEST_CASE("ch12: every kind of malformed script line names its file and line") {
+TEST_CASE("ch13: every kind of malformed script line names its file and line") {
   TempDir dir;
   expect_error(dir, "-vp 0 0 0\n-bogus 1\n", "bad.ecs", 2, "unknown option");
   expect_error(dir, "-size 64\n", "bad.ecs", 1, "missing");
@@ -153,7 +155,7 @@ TEST_CASE("ch12: every kind of malformed script line names its file and line") {
   expect_error(dir, "-c inner.ecs\n", "inner.ecs", 1, "missing");
 }
 
-TEST_CASE("ch12: OBJ vertices are split by their attributes, primIDs follow the file") {
+TEST_CASE("ch13: OBJ vertices are split by their attributes, primIDs follow the file") {
   TempDir dir;
   dir.write("box.mtl", kMtl);
   const fs::path obj = dir.write("box.obj", kObj);
@@ -173,4 +175,32 @@ TEST_CASE("ch12: OBJ vertices are split by their attributes, primIDs follow the 
   const auto* light = dynamic_cast<const TriangleLight*>(scene.lights.at(0).get());
   REQUIRE(light != nullptr);
   CHECK(light->normal().z == doctest::Approx(-1.0));
+}
+
+TEST_CASE("scene scripts read back the camera the viewer prints (chapter 15's c key)") {
+  OrbitCamera c;
+  c.eye = {3, 2, -7};
+  c.centre = {0.5f, 1, 0.25f};
+  c.up = {0.1f, 1, 0.05f};
+  c.fov_degrees = 45;
+  c.rotate(0.7f, 0.2f);
+  c.roll(0.1f);
+  c.lens_radius = 0.125f;
+  c.focal_distance = 6.3f;
+  const std::string text = c.to_ecs_options();
+  std::istringstream in(text);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  const std::vector<std::string_view> args(words.begin(), words.end());
+  SceneScript script;
+  read_script_args(args, script);
+  const CameraParams p = script.scene.camera;
+  CHECK(p.position == c.eye);
+  CHECK(p.look_at == c.centre);
+  CHECK(p.up == c.up);
+  CHECK(p.fov_degrees == c.fov_degrees);
+  CHECK(p.lens_radius == c.lens_radius);
+  CHECK(p.focal_distance == c.focal_distance);
+  const OrbitCamera back = OrbitCamera::from_params(p);
+  CHECK(back.to_ecs_options() == text);
 }

@@ -1,0 +1,172 @@
+// The public API: every configuration it accepts traces a small scene like the brute-force
+// oracle on every ISA, `.fast` and `.accurate` resolve per layout, the defaults follow chapter
+// 6's rule, and bad strings are refused with the list of supported ones.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "06_layouts/triangle_config.h"
+#include "09_kernel_api/accel.h"
+#include "testing/brute_force.h"
+#include "01_base/ray_sets.h"
+#include "testing/scenes.h"
+
+namespace {
+
+using namespace rtk;
+
+/// The message an invalid configuration is refused with, or "" if it is accepted.
+std::string refusal(const AccelConfig& config) {
+  try {
+    resolve_config(config);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("api: every accepted configuration agrees with brute force on every ISA") {
+  // A closed sphere, a soup with zero-area triangles and a few long diagonal triangles (which
+  // the spatial splits cut), in one scene.
+  TriangleMesh mesh = test::make_sphere(10, 20, {0.5f, 0.5f, 0.5f}, 0.3f);
+  const TriangleMesh soup = test::make_random_soup(300, 601);
+  const TriangleMesh slivers = test::make_slivers(40, 602);
+  for (const TriangleMesh* part : {&soup, &slivers}) {
+    const uint32_t base = uint32_t(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), part->vertices.begin(), part->vertices.end());
+    for (auto t : part->triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  test::add_degenerate_triangles(mesh, 20, 603);
+  const std::vector<Ray> rays = test::mixed_rays(mesh.bounds(), 200, 604);
+  std::vector<Hit> oracle(rays.size());
+  std::vector<uint8_t> oracle_occluded(rays.size());
+  for (size_t i = 0; i < rays.size(); ++i) {
+    oracle[i] = test::brute_force_intersect(mesh, rays[i]);
+    oracle_occluded[i] = test::brute_force_occluded(mesh, rays[i]) ? 1 : 0;
+  }
+  int configs = 0;
+  for (const std::string& accel : supported_accels()) {
+    for (const std::string& tri : supported_tris(accel)) {
+      for (const Isa isa : supported_isas()) {
+        CAPTURE(accel);
+        CAPTURE(tri);
+        CAPTURE(std::string(isa_name(isa)));
+        AccelConfig config;
+        config.accel = accel, config.tri = tri, config.isa = isa;
+        const Accel structure(mesh, config);
+        CHECK(structure.info().accel == accel);
+        CHECK(structure.info().tri == tri);
+        std::vector<Hit> hits(rays.size());
+        std::vector<uint8_t> blocked(rays.size());
+        structure.intersect(rays, hits);
+        structure.occluded(rays, blocked);
+        int wrong = 0, wrong_occlusion = 0;
+        std::string first;
+        for (size_t i = 0; i < rays.size(); ++i) {
+          const std::string why = test::compare_hits(mesh, rays[i], hits[i], oracle[i]);
+          if (!why.empty() && first.empty()) first = why;
+          wrong += why.empty() ? 0 : 1;
+          if (why.empty() && blocked[i] != (hits[i].found() ? 1 : 0) && blocked[i] != oracle_occluded[i])
+            ++wrong_occlusion;
+        }
+        CAPTURE(first);
+        CHECK(wrong == 0);
+        CHECK(wrong_occlusion == 0);
+      }
+      ++configs;
+    }
+  }
+  // bvh2: triangle1.moeller with both splits; bvh4 and bvh8: all 15 layout configurations.
+  CHECK(configs == 2 + 4 * 15);
+}
+
+TEST_CASE("api: the table offers every configuration chapter 6 supports, with both split strategies") {
+  std::set<std::string> chapter6;
+  for (const TriangleConfig& c : supported_triangle_configs()) chapter6.insert(c.name());
+  for (const std::string base : {"bvh4", "bvh8"})
+    for (const std::string split : {".objectsplit", ".spatialsplit"}) {
+      const std::vector<std::string> tris = supported_tris(base + split);
+      CHECK(std::set<std::string>(tris.begin(), tris.end()) == chapter6);
+      CHECK(tris.size() == chapter6.size());
+    }
+  CHECK(supported_tris("bvh2.spatialsplit") == std::vector<std::string>{"triangle1.moeller"});
+  const std::vector<std::string> accels = supported_accels();
+  for (const std::string name : {"bvh2.objectsplit", "bvh2.spatialsplit", "bvh4.objectsplit", "bvh4.spatialsplit",
+                                 "bvh8.objectsplit", "bvh8.spatialsplit"})
+    CHECK(std::count(accels.begin(), accels.end(), name) == 1);
+}
+
+TEST_CASE("api: .fast and .accurate resolve per layout, and bare names take the defaults") {
+  auto tri_of = [](const std::string& accel, const std::string& tri) {
+    AccelConfig c;
+    c.accel = accel, c.tri = tri;
+    return resolve_config(c).tri;
+  };
+  CHECK(tri_of("bvh4", "triangle4v.accurate") == "triangle4v.watertight");
+  CHECK(tri_of("bvh8", "triangle1i.accurate") == "triangle1i.watertight");
+  CHECK(tri_of("bvh4", "triangle4.accurate") == "triangle4.moeller");  // precomputed: Möller only
+  CHECK(tri_of("bvh4", "triangle4i.fast") == "triangle4i.moeller");
+  CHECK(tri_of("bvh8.spatialsplit", "triangle4v") == "triangle4v.moeller");
+  CHECK(tri_of("bvh4", "triangle1v.pluecker") == "triangle1v.pluecker");
+  CHECK(tri_of("bvh2", "triangle1.accurate") == "triangle1.moeller");
+  AccelConfig c;
+  c.accel = "bvh4";
+  CHECK(resolve_config(c).accel == "bvh4.objectsplit");
+  c.accel = "bvh4.spatialsplit";
+  CHECK(resolve_config(c).accel == "bvh4.spatialsplit");
+}
+
+TEST_CASE("api: the default layout follows chapter 6's rule and says why") {
+  for (const Isa isa : supported_isas()) {
+    CAPTURE(std::string(isa_name(isa)));
+    AccelConfig config;
+    config.isa = isa;
+    const AccelInfo info = resolve_config(config);
+    CHECK(info.accel == (isa == Isa::avx2 || isa == Isa::avx512 ? "bvh8.objectsplit" : "bvh4.objectsplit"));
+    CHECK(info.tri == std::string(layout_name(choose_default_layout(0, isa))) + ".moeller");
+    CHECK(contains(info.choice, "default"));
+    // A scene too large for the memory budget gets the leanest layout.
+    const TriangleMesh mesh = test::make_sphere(20, 40);
+    config.memory_budget = 1000;
+    const Accel lean(mesh, config);
+    CHECK(lean.info().tri == "triangle4i.moeller");
+    CHECK(contains(lean.info().choice, "leanest"));
+    // BVH2 has one kind of leaf, whatever the ISA.
+    config.accel = "bvh2";
+    CHECK(resolve_config(config).tri == "triangle1.moeller");
+  }
+}
+
+TEST_CASE("api: unsupported configurations are refused with the supported list") {
+  AccelConfig c;
+  c.accel = "bvh3";
+  std::string why = refusal(c);
+  CHECK(contains(why, "-accel"));
+  CHECK(contains(why, "bvh8.spatialsplit"));
+  c.accel = "bvh4.nosplit";
+  CHECK(contains(refusal(c), "bvh4.objectsplit"));
+  c.accel = "bvh4";
+  c.tri = "triangle4.pluecker";  // precomputed edges: Möller-Trumbore only
+  why = refusal(c);
+  CHECK(contains(why, "-tri"));
+  CHECK(contains(why, "triangle4v.pluecker"));
+  c.tri = "triangle5";
+  CHECK(contains(refusal(c), "triangle4i.watertight"));
+  c.tri = "triangle4.fastest";
+  CHECK(contains(refusal(c), "-tri"));
+  c.accel = "bvh2.spatialsplit";
+  c.tri = "triangle4";
+  why = refusal(c);
+  CHECK(contains(why, "not available with bvh2.spatialsplit"));
+  CHECK(contains(why, "triangle1.moeller"));
+  c.tri = "";
+  CHECK(refusal(c) == "");
+}

@@ -1,0 +1,62 @@
+/// \file
+/// Samplers: where the renderer's random numbers come from. Both kinds are pure functions of
+/// (pixel, sample index, dimension, seed), so the image is the same for any thread count and
+/// any tile order.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "10_sampling/rng.h"
+#include "10_sampling/vec2.h"
+
+namespace rtk {
+
+/// The two sample generators of chapter 10.
+enum class SamplerType {
+  independent,  ///< uniform random numbers (PCG32 seeded by the hash of pixel and sample)
+  sobol,        ///< Owen-scrambled (0,2)-sequence, one independently scrambled pair per dimension
+};
+
+/// Parses "independent" or "sobol"; throws std::invalid_argument naming both otherwise.
+SamplerType parse_sampler_type(std::string_view name);
+
+/// A sample generator for one thread. Copy it into each thread; call start_pixel_sample before
+/// each camera path, then take numbers in a fixed order (get_pixel_2d, then get_1d/get_2d).
+/// The n-th call after start_pixel_sample gets the n-th dimension, whatever happened before.
+///
+/// The Sobol variant gives each dimension (a 1D number or a 2D pair) its own shuffled and
+/// Owen-scrambled copy of the (0,2)-sequence ("padding", Kollig and Keller 2002; the shuffle
+/// is Burley 2020's nested uniform scramble of the index). For 2^m samples in a pixel each
+/// pair is then a (0,m,2)-net: every elementary interval of area 2^-m holds one point.
+class Sampler {
+ public:
+  /// A sampler of the given type; the seed selects a different, equally good image.
+  explicit Sampler(SamplerType type = SamplerType::sobol, uint32_t seed = 0)
+      : type_(type), seed_(seed) {}
+
+  /// Starts sample `index` of pixel (x, y): resets the dimension counter.
+  void start_pixel_sample(int x, int y, uint32_t index);
+
+  /// The next 1D number in [0, 1).
+  float get_1d();
+  /// The next 2D point in [0, 1)^2.
+  Vec2f get_2d();
+  /// The film position within the pixel: by convention the first 2D point of a pixel sample.
+  Vec2f get_pixel_2d() { return get_2d(); }
+
+  /// The type this sampler was made with.
+  SamplerType type() const { return type_; }
+
+ private:
+  uint32_t dimension_seed();
+
+  SamplerType type_;
+  uint32_t seed_;
+  uint64_t pixel_hash_ = 0;
+  uint32_t index_ = 0;
+  uint32_t dimension_ = 0;
+  Pcg32 rng_;
+};
+
+}  // namespace rtk

@@ -1,0 +1,138 @@
+// Chapter 10 tests: cameras.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "10_sampling/camera.h"
+#include "10_sampling/rng.h"
+
+using namespace rtk;
+
+namespace {
+float angle_between(Vec3f a, Vec3f b) {
+  return std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0f, 1.0f));
+}
+float degrees(float radians) { return radians * 180.0f / std::numbers::pi_v<float>; }
+
+// The Cornell box view of Embree 1.1's cornell_box.ecs.
+CameraParams cornell() {
+  CameraParams p;
+  p.position = {278, 273, -800};
+  p.look_at = {278, 273, 0};
+  p.up = {0, 1, 0};
+  p.fov_degrees = 37;
+  return p;
+}
+}  // namespace
+
+TEST_CASE("ch10: the centre of the image looks at the point of interest") {
+  CameraParams p;
+  p.position = {1, 2, 3};
+  p.look_at = {-4, 0.5f, 7};
+  p.up = {0.2f, 1, 0.1f};
+  p.aspect = 1.5f;
+  const Camera camera(p);
+  const Ray ray = camera.generate_ray({0.5f, 0.5f}, {0.5f, 0.5f}, 0.0f);
+  CHECK(ray.org == p.position);
+  CHECK(length(ray.dir - normalize(p.look_at - p.position)) < 1e-6f);
+  CHECK(is_valid(ray));
+}
+
+TEST_CASE("ch10: the vertical field of view spans the image height") {
+  for (float fov : {0.06f, 37.0f, 64.0f, 120.0f, 179.0f}) {
+    CameraParams p = cornell();
+    p.fov_degrees = fov;
+    p.aspect = 2.0f;
+    const Camera camera(p);
+    const Vec3f top = camera.generate_ray({0.5f, 0.0f}, {}, 0).dir;
+    const Vec3f bottom = camera.generate_ray({0.5f, 1.0f}, {}, 0).dir;
+    const Vec3f left = camera.generate_ray({0.0f, 0.5f}, {}, 0).dir;
+    const Vec3f right = camera.generate_ray({1.0f, 0.5f}, {}, 0).dir;
+    CHECK(degrees(angle_between(top, bottom)) == doctest::Approx(fov).epsilon(1e-3));
+    // The horizontal field follows from the aspect ratio: tan(h/2) = aspect * tan(v/2).
+    const float h =
+        2.0f * std::atan(2.0f * std::tan(0.5f * fov * std::numbers::pi_v<float> / 180.0f));
+    CHECK(angle_between(left, right) == doctest::Approx(h).epsilon(1e-3));
+  }
+}
+
+TEST_CASE("ch10: the image is upright and right is the Embree convention's +x") {
+  // Looking along +z with y up, the left-handed Embree 1.1 frame puts +x on the right.
+  CameraParams p;
+  p.look_at = {0, 0, 1};
+  const Camera camera(p);
+  CHECK(camera.right().x == doctest::Approx(1.0f));
+  CHECK(camera.up().y == doctest::Approx(1.0f));
+  CHECK(camera.generate_ray({0.5f, 0.0f}, {}, 0).dir.y > 0.0f);  // top row looks up
+  CHECK(camera.generate_ray({1.0f, 0.5f}, {}, 0).dir.x > 0.0f);  // right column looks right
+}
+
+TEST_CASE("ch10: thin-lens rays through one film point meet on the plane of focus") {
+  CameraParams p = cornell();
+  p.lens_radius = 20.0f;
+  p.focal_distance = 600.0f;
+  const Camera lens(p);
+  p.lens_radius = 0.0f;
+  const Camera pinhole(p);
+  Pcg32 rng(14);
+  for (int film = 0; film < 20; ++film) {
+    const Vec2f f{rng.next_float(), rng.next_float()};
+    const Ray pin = pinhole.generate_ray(f, {}, 0);
+    // Where the pinhole ray crosses the plane of focus (600 along the view axis).
+    const Vec3f focus = pin.org + pin.dir * (600.0f / dot(pin.dir, pinhole.forward()));
+    for (int s = 0; s < 10; ++s) {
+      const Ray r = lens.generate_ray(f, {rng.next_float(), rng.next_float()}, 0);
+      // The origin lies on the lens disk...
+      const Vec3f offset = r.org - p.position;
+      CHECK(std::fabs(dot(offset, lens.forward())) < 1e-3f);
+      CHECK(length(offset) <= 20.0f * (1 + 1e-5f));
+      // ...and the ray passes through the pinhole ray's point of focus.
+      const Vec3f hit =
+          r.org + r.dir * (dot(focus - r.org, lens.forward()) / dot(r.dir, lens.forward()));
+      CHECK(length(hit - focus) < 1e-3f * 600.0f);
+      CHECK(length(r.dir) == doctest::Approx(1.0f));
+    }
+  }
+  // The default focal distance is the distance to the point of interest.
+  CameraParams q = cornell();
+  q.lens_radius = 1.0f;
+  CHECK(Camera(q).params().focal_distance == doctest::Approx(800.0f));
+}
+
+TEST_CASE("ch10: camera rays carry the shutter time") {
+  const Camera camera(cornell());
+  CHECK(camera.generate_ray({0.3f, 0.7f}, {}, 0.625f).time == 0.625f);
+  const Ray r = camera.generate_ray({0.3f, 0.7f}, {}, 0.0f);
+  CHECK(r.tnear == 0.0f);
+  CHECK(std::isinf(r.tfar));
+}
+
+TEST_CASE("ch10: bad camera parameters are refused with a reason") {
+  auto with = [](auto change) {
+    CameraParams p = cornell();
+    change(p);
+    return p;
+  };
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.look_at = p.position; })),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.up = {0, 0, 1}; })), std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.up = {0, 0, 0}; })), std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.fov_degrees = 0; })), std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.fov_degrees = 180; })),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.fov_degrees = NAN; })),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.aspect = 0; })), std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.lens_radius = -1; })), std::invalid_argument);
+  CHECK_THROWS_AS(Camera(with([](CameraParams& p) { p.position.x = INFINITY; })),
+                  std::invalid_argument);
+  try {
+    Camera(with([](CameraParams& p) { p.up = {0, 0, 1}; }));
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("parallel") != std::string::npos);
+  }
+}

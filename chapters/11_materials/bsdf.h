@@ -1,0 +1,80 @@
+/// \file
+/// The BSDF at a surface point: one of chapter 11's models, placed in the point's shading
+/// frame. This is what the path tracer (next chapters) asks for at every hit.
+#pragma once
+
+#include <optional>
+#include <variant>
+
+#include "10_sampling/frame.h"
+#include "11_materials/dielectric.h"
+#include "11_materials/lambertian.h"
+#include "11_materials/plastic.h"
+#include "11_materials/rough_conductor.h"
+#include "11_materials/specular.h"
+
+namespace rtk {
+
+/// Every scattering model of chapter 11. A closed set in a variant rather than a class
+/// hierarchy: a BSDF is made at every hit, and a variant needs no allocation there.
+using BsdfModel = std::variant<Lambertian, Mirror, SmoothConductor, RoughConductor,
+                               SmoothDielectric, ThinDielectric, Plastic>;
+
+/// Whether a model scatters only into delta lobes (mirror, smooth metal, glass): light
+/// sampling is useless there, and an integrator skips it.
+inline bool is_delta_only(const BsdfModel& model) {
+  return std::holds_alternative<Mirror>(model) || std::holds_alternative<SmoothConductor>(model) ||
+         std::holds_alternative<SmoothDielectric>(model) ||
+         std::holds_alternative<ThinDielectric>(model);
+}
+
+/// Whether a model lets light through the surface (the integrator must then not require the
+/// light to be on the side of wo).
+inline bool is_transmissive(const BsdfModel& model) {
+  return std::holds_alternative<SmoothDielectric>(model) ||
+         std::holds_alternative<ThinDielectric>(model);
+}
+
+// [ch11-bsdf]
+/// A BSDF in world space: a model and the shading frame it lives in. Directions passed in
+/// and out are world-space unit vectors pointing away from the surface.
+class Bsdf {
+ public:
+  /// A model placed in a frame whose n is the shading normal.
+  Bsdf(const Frame& frame, const BsdfModel& model) : frame_(frame), model_(model) {}
+
+  /// f(wo, wi), without the cosine; zero for delta lobes.
+  Color eval(Vec3f wo, Vec3f wi) const {
+    const Vec3f lo = frame_.to_local(wo), li = frame_.to_local(wi);
+    return std::visit([&](const auto& m) { return m.eval(lo, li); }, model_);
+  }
+  /// The solid-angle density with which sample() returns wi (non-delta lobes only).
+  float pdf(Vec3f wo, Vec3f wi) const {
+    const Vec3f lo = frame_.to_local(wo), li = frame_.to_local(wi);
+    return std::visit([&](const auto& m) { return m.pdf(lo, li); }, model_);
+  }
+  /// A sampled direction (world space) from a 1D lobe choice and a 2D sample.
+  std::optional<BsdfSample> sample(Vec3f wo, float u_lobe, Vec2f u) const {
+    const Vec3f lo = frame_.to_local(wo);
+    std::optional<BsdfSample> s =
+        std::visit([&](const auto& m) { return m.sample(lo, u_lobe, u); }, model_);
+    if (s) s->wi = frame_.to_world(s->wi);
+    return s;
+  }
+
+  /// Whether all lobes are deltas.
+  bool delta_only() const { return is_delta_only(model_); }
+  /// Whether light passes through (lights behind the surface can then contribute).
+  bool transmissive() const { return is_transmissive(model_); }
+  /// The shading frame.
+  const Frame& frame() const { return frame_; }
+  /// The model.
+  const BsdfModel& model() const { return model_; }
+
+ private:
+  Frame frame_;
+  BsdfModel model_;
+};
+// [ch11-bsdf]
+
+}  // namespace rtk

@@ -1,0 +1,94 @@
+/// \file
+/// Materials: what a scene file names ("Matte", "Plastic", "Metal", ...) turned into a BSDF
+/// model, with textures and an optional emission.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "11_materials/bsdf.h"
+#include "11_materials/texture.h"
+
+namespace rtk {
+
+/// One parameter of a material as a scene file gives it (the XML `<int>`, `<float>`,
+/// `<float2>`, `<float3>` and `<texture>` elements, or an MTL line).
+using ParameterValue =
+    std::variant<int, float, Vec2f, Color, std::string, std::shared_ptr<const Texture>>;
+
+/// Named parameters of a material. Getters convert where it is safe (an int or a float where a
+/// colour is expected is a grey; a colour where a texture is expected is a constant texture)
+/// and throw std::invalid_argument naming the parameter otherwise. The list remembers which
+/// parameters were read, so that the ones nobody read can be reported.
+class ParameterList {
+ public:
+  /// Sets (or replaces) a parameter.
+  void set(const std::string& name, ParameterValue value) { values_[name] = std::move(value); }
+  /// Whether a parameter is present.
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+
+  /// A scalar (int or float).
+  float get_float(const std::string& name, float fallback) const;
+  /// A colour (float3, or a scalar meaning grey).
+  Color get_color(const std::string& name, Color fallback) const;
+  /// A float2.
+  Vec2f get_float2(const std::string& name, Vec2f fallback) const;
+  /// A texture, or a constant texture made from a colour or scalar; null if absent and no
+  /// fallback colour is given.
+  std::shared_ptr<const Texture> get_texture(const std::string& name) const;
+
+  /// The names of the parameters no getter has asked for, in alphabetical order.
+  std::vector<std::string> unused() const;
+
+ private:
+  const ParameterValue* find(const std::string& name) const;
+  std::map<std::string, ParameterValue> values_;
+  mutable std::set<std::string> used_;
+};
+
+/// Receives the warnings of make_material (a parameter ignored, a material approximated).
+using WarningHandler = std::function<void(const std::string&)>;
+
+// [ch11-material]
+/// A surface's appearance: a BSDF model with constant parameters, optionally a texture that
+/// replaces its diffuse colour (Lambertian reflectance, Plastic pigment) point by point, and
+/// the radiance the surface emits (non-zero for area lights).
+struct Material {
+  std::string name = "Matte";             ///< the model the scene's material became (for messages)
+  BsdfModel prototype = Lambertian{};     ///< the BSDF model with its constant parameters
+  std::shared_ptr<const Texture> albedo;  ///< the diffuse colour's texture, or null
+  Color emission;                         ///< emitted radiance (OBJ Ke, or "emission")
+
+  /// The BSDF at a point with shading frame `frame` and texture coordinates `uv`.
+  Bsdf make_bsdf(const Frame& frame, Vec2f uv) const;
+  /// Whether the surface emits light.
+  bool is_emissive() const { return !is_black(emission); }
+};
+// [ch11-material]
+
+/// Builds a material from the name and parameters used by the Embree scene files (names are
+/// matched without regard to case):
+///   - Matte: reflectance (colour or texture);  MatteTextured: Kd (texture), s0, ds;
+///   - Mirror: reflectance (or reflectivity);
+///   - Metal: eta, k (colours), roughness (0: polished);
+///   - Dielectric / Glass: etaInside, etaOutside, transmission;
+///   - ThinDielectric / ThinGlass: eta, transmission, thickness;
+///   - Plastic: pigmentColor, eta, roughness;
+///   - MetallicPaint: shadeColor, eta (glitterColor and glitterSpread are not modelled:
+///     a smooth-coated Plastic, with a warning);
+///   - OBJ (the MTL keys): Kd or map_Kd; Ks > 0 becomes a Plastic whose roughness is 1 / Ns
+///     (a warning says that Ks's magnitude is replaced by the Fresnel term); d < 1, Tf and
+///     Ka are ignored with a warning; Ke is the emission.
+/// Any material may carry "emission" (a colour). An unknown name becomes a grey Matte, and
+/// every parameter that was not used is reported, both through `warn`. Invalid values (a
+/// negative index of refraction, a NaN) throw std::invalid_argument.
+Material make_material(std::string_view name, const ParameterList& params,
+                       const WarningHandler& warn = {});
+
+}  // namespace rtk

@@ -1,0 +1,234 @@
+// Chapter 11 tests: textures (bilinear lookup, wrap modes, files) and materials built from the
+// scene files' names and parameters.
+#include <doctest/doctest.h>
+#include <stb/stb_image_write.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "11_materials/material.h"
+#include "11_materials/texture.h"
+
+using namespace rtk;
+
+namespace {
+// A 2 x 2 image: top row red, green; bottom row blue, white.
+ImageTexture checker(WrapMode wrap) {
+  return ImageTexture(2, 2, {Color(1, 0, 0), Color(0, 1, 0), Color(0, 0, 1), Color(1, 1, 1)}, wrap);
+}
+bool close(Color a, Color b, float eps = 1e-5f) {
+  return std::fabs(a.r - b.r) <= eps && std::fabs(a.g - b.g) <= eps && std::fabs(a.b - b.b) <= eps;
+}
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rtk_ch10_" + name)).string();
+}
+}  // namespace
+
+TEST_CASE("ch11: image textures interpolate bilinearly between texel centres") {
+  const ImageTexture t = checker(WrapMode::clamp);
+  // Texel centres: (0.25, 0.75) is the top-left texel (v grows upward).
+  CHECK(close(t.eval({0.25f, 0.75f}), Color(1, 0, 0)));
+  CHECK(close(t.eval({0.75f, 0.75f}), Color(0, 1, 0)));
+  CHECK(close(t.eval({0.25f, 0.25f}), Color(0, 0, 1)));
+  CHECK(close(t.eval({0.75f, 0.25f}), Color(1, 1, 1)));
+  // The middle is the mean of the four; halfway along the top row, the mean of two.
+  CHECK(close(t.eval({0.5f, 0.5f}), Color(0.5f, 0.5f, 0.5f)));
+  CHECK(close(t.eval({0.5f, 0.75f}), Color(0.5f, 0.5f, 0)));
+  // Clamp: beyond the border the border texel stays.
+  CHECK(close(t.eval({-3.0f, 0.75f}), Color(1, 0, 0)));
+  CHECK(close(t.eval({0.25f, 7.0f}), Color(1, 0, 0)));
+}
+
+TEST_CASE("ch11: the repeat mode tiles the plane") {
+  const ImageTexture t = checker(WrapMode::repeat);
+  for (float u : {0.1f, 0.37f, 0.8f})
+    for (float v : {0.05f, 0.5f, 0.93f}) {
+      CHECK(close(t.eval({u, v}), t.eval({u + 1, v}), 1e-4f));
+      CHECK(close(t.eval({u, v}), t.eval({u - 3, v + 2}), 1e-4f));
+    }
+  // At u = 0 the left column blends with the right one (across the seam).
+  CHECK(close(t.eval({0.0f, 0.75f}), Color(0.5f, 0.5f, 0)));
+  // Coordinates that are not numbers do not crash.
+  CHECK(is_finite(t.eval({NAN, 0.5f})));
+  CHECK(is_finite(t.eval({INFINITY, -INFINITY})));
+  CHECK_THROWS_AS(ImageTexture(2, 2, std::vector<Color>(3)), std::invalid_argument);
+  CHECK_THROWS_AS(ImageTexture(0, 1, {}), std::invalid_argument);
+}
+
+TEST_CASE("ch11: image files load through stb_image, decoded as asked") {
+  // A 3 x 2 PNG of known bytes.
+  const unsigned char bytes[] = {0,   64,  128, 255, 255, 255, 10,  20,  30,
+                                 200, 100, 50,  1,   2,   3,   128, 128, 128};
+  const std::string png = temp_path("tex.png");
+  REQUIRE(stbi_write_png(png.c_str(), 3, 2, 3, bytes, 9) != 0);
+  const auto lin = load_image_texture(png, ColorEncoding::linear, WrapMode::clamp);
+  REQUIRE(lin->width() == 3);
+  REQUIRE(lin->height() == 2);
+  CHECK(close(lin->texel(0, 0), Color(0, 64 / 255.0f, 128 / 255.0f)));
+  CHECK(close(lin->texel(2, 1), Color(128 / 255.0f)));
+  const auto srgb = load_image_texture(png, ColorEncoding::srgb);
+  CHECK(close(srgb->texel(2, 1), Color(srgb_to_linear(128 / 255.0f))));
+  // A Radiance HDR file keeps values above 1 (to the 1% of its shared-exponent encoding).
+  const float hdr_data[] = {4.0f, 0.5f, 0.25f, 100.0f, 1.0f, 0.0f};
+  const std::string hdr = temp_path("tex.hdr");
+  REQUIRE(stbi_write_hdr(hdr.c_str(), 2, 1, 3, hdr_data) != 0);
+  const auto h = load_image_texture(hdr);
+  CHECK(close(h->texel(0, 0), Color(4.0f, 0.5f, 0.25f), 0.02f));
+  CHECK(close(h->texel(1, 0), Color(100.0f, 1.0f, 0.0f), 0.5f));
+  std::remove(png.c_str());
+  std::remove(hdr.c_str());
+  // A missing file names itself in the error.
+  try {
+    load_image_texture(temp_path("does_not_exist.png"));
+    FAIL("no exception");
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()).find("does_not_exist.png") != std::string::npos);
+  }
+}
+
+TEST_CASE("ch11: the sRGB curve") {
+  CHECK(srgb_to_linear(0.0f) == 0.0f);
+  CHECK(srgb_to_linear(1.0f) == doctest::Approx(1.0f));
+  CHECK(srgb_to_linear(0.5f) == doctest::Approx(0.21404f).epsilon(1e-4));
+  CHECK(srgb_to_linear(0.04f) == doctest::Approx(0.04f / 12.92f));
+}
+
+TEST_CASE("ch11: parameter lists convert what is safe and refuse the rest") {
+  ParameterList p;
+  p.set("a", 2);
+  p.set("b", 0.5f);
+  p.set("c", Color(1, 2, 3));
+  p.set("d", Vec2f{1, 2});
+  p.set("e", std::string("file.png"));
+  CHECK(p.get_float("a", 0) == 2.0f);
+  CHECK(p.get_color("b", Color()) == Color(0.5f));
+  CHECK(p.get_color("c", Color()) == Color(1, 2, 3));
+  CHECK(p.get_float2("d", {}) == Vec2f{1, 2});
+  CHECK(p.get_float("missing", 7) == 7.0f);
+  CHECK(close(p.get_texture("c")->eval({0.3f, 0.3f}), Color(1, 2, 3)));
+  CHECK(p.get_texture("missing") == nullptr);
+  CHECK(p.unused() == std::vector<std::string>{"e"});
+  CHECK_THROWS_AS(p.get_float("c", 0), std::invalid_argument);
+  CHECK_THROWS_AS(p.get_color("d", Color()), std::invalid_argument);
+  CHECK_THROWS_AS(p.get_texture("e"), std::invalid_argument);
+}
+
+TEST_CASE("ch11: materials are built from the Embree scene names") {
+  std::vector<std::string> warnings;
+  const WarningHandler warn = [&](const std::string& w) { warnings.push_back(w); };
+  const Frame frame;
+  SUBCASE("Matte and the case of names") {
+    ParameterList p;
+    p.set("reflectance", Color(0.2f, 0.4f, 0.6f));
+    const Material m = make_material("matte", p, warn);
+    REQUIRE(std::holds_alternative<Lambertian>(m.prototype));
+    CHECK(std::get<Lambertian>(m.prototype).reflectance == Color(0.2f, 0.4f, 0.6f));
+    CHECK(warnings.empty());
+  }
+  SUBCASE("MatteTextured maps its coordinates by s0 and ds") {
+    ParameterList p;
+    p.set("Kd", std::shared_ptr<const Texture>(
+                    std::make_shared<ImageTexture>(checker(WrapMode::repeat))));
+    p.set("s0", Vec2f{0.5f, 0.0f});
+    p.set("ds", Vec2f{2.0f, 1.0f});
+    const Material m = make_material("MatteTextured", p, warn);
+    REQUIRE(m.albedo);
+    // uv (0, 0.75) -> texture (0.5, 0.75): the top row's midpoint.
+    const Bsdf b = m.make_bsdf(frame, {0.0f, 0.75f});
+    CHECK(close(std::get<Lambertian>(b.model()).reflectance, Color(0.5f, 0.5f, 0)));
+    CHECK(warnings.empty());
+  }
+  SUBCASE("Metal: polished or rough by its roughness") {
+    ParameterList p;
+    p.set("eta", Color(0.19f, 0.45f, 1.5f));
+    p.set("k", Color(3.06f, 2.4f, 1.88f));
+    p.set("roughness", 0.005f);
+    const Material rough = make_material("Metal", p, warn);
+    REQUIRE(std::holds_alternative<RoughConductor>(rough.prototype));
+    CHECK(std::get<RoughConductor>(rough.prototype).ggx.alpha ==
+          doctest::Approx(roughness_to_alpha(0.005f)));
+    p.set("roughness", 0.0f);
+    CHECK(std::holds_alternative<SmoothConductor>(make_material("Metal", p, warn).prototype));
+  }
+  SUBCASE("Glass and Dielectric take the ratio of the indices") {
+    ParameterList p;
+    p.set("etaInside", 1.45f);
+    p.set("etaOutside", 1.0f);
+    p.set("transmission", Color(1, 1, 1));
+    const Material m = make_material("glass", p, warn);
+    REQUIRE(std::holds_alternative<SmoothDielectric>(m.prototype));
+    CHECK(std::get<SmoothDielectric>(m.prototype).eta == doctest::Approx(1.45f));
+    CHECK(make_material("Dielectric", p, warn).name == "Dielectric");
+    CHECK(std::holds_alternative<ThinDielectric>(
+        make_material("ThinDielectric", {}, warn).prototype));
+  }
+  SUBCASE("Mirror accepts reflectivity (Embree 2.0) and reflectance") {
+    ParameterList p;
+    p.set("reflectivity", Color(0.5f));
+    CHECK(std::get<Mirror>(make_material("mirror", p, warn).prototype).reflectance == Color(0.5f));
+  }
+  SUBCASE("Plastic and MetallicPaint") {
+    ParameterList p;
+    p.set("pigmentColor", Color(0.1f, 0.2f, 0.3f));
+    p.set("eta", 1.5f);
+    p.set("roughness", 0.0f);
+    const Material m = make_material("Plastic", p, warn);
+    REQUIRE(std::holds_alternative<Plastic>(m.prototype));
+    CHECK(std::get<Plastic>(m.prototype).smooth());
+    CHECK(warnings.empty());
+    ParameterList paint;
+    paint.set("eta", 1.45f);
+    paint.set("shadeColor", Color(0.5f, 0, 0));
+    paint.set("glitterColor", Color(0.5f));
+    const Material car = make_material("MetallicPaint", paint, warn);
+    CHECK(std::get<Plastic>(car.prototype).pigment == Color(0.5f, 0, 0));
+    CHECK(warnings.size() == 1);
+  }
+  SUBCASE("OBJ: diffuse, specular approximated, emission") {
+    ParameterList p;
+    p.set("Kd", Color(0.7f));
+    p.set("Ks", Color(0.0f));
+    p.set("Ns", 1.0f);
+    p.set("d", 1.0f);
+    const Material diffuse = make_material("OBJ", p, warn);
+    CHECK(std::holds_alternative<Lambertian>(diffuse.prototype));
+    CHECK(warnings.empty());
+    p.set("Ks", Color(0.3f));
+    p.set("Ke", Color(5.0f));
+    const Material glossy = make_material("OBJ", p, warn);
+    CHECK(std::holds_alternative<Plastic>(glossy.prototype));
+    CHECK(glossy.is_emissive());
+    CHECK(warnings.size() == 1);
+    // A texture map supersedes Kd (which is then not reported as unused).
+    p.set("map_Kd", std::shared_ptr<const Texture>(
+                        std::make_shared<ImageTexture>(checker(WrapMode::repeat))));
+    const Material mapped = make_material("OBJ", p, warn);
+    CHECK(mapped.albedo);
+    CHECK(warnings.size() == 2);  // only the Ks approximation again
+  }
+  SUBCASE("unknown names and unused parameters are reported, not fatal") {
+    ParameterList p;
+    p.set("reflectance", Color(0.5f));
+    p.set("sheen", 0.3f);
+    const Material m = make_material("Velvet", p, warn);
+    CHECK(std::holds_alternative<Lambertian>(m.prototype));
+    REQUIRE(warnings.size() == 3);  // the name, then both parameters
+    CHECK(warnings[0].find("Velvet") != std::string::npos);
+    warnings.clear();
+    make_material("Matte", p, warn);
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].find("sheen") != std::string::npos);
+  }
+  SUBCASE("invalid values are errors") {
+    ParameterList p;
+    p.set("etaInside", -1.0f);
+    CHECK_THROWS_AS(make_material("Dielectric", p, warn), std::invalid_argument);
+    ParameterList q;
+    q.set("reflectance", Color(NAN, 0, 0));
+    CHECK_THROWS_AS(make_material("Matte", q, warn), std::invalid_argument);
+  }
+}

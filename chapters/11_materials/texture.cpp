@@ -1,0 +1,94 @@
+#include "11_materials/texture.h"
+
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rtk {
+
+ImageTexture::ImageTexture(int width, int height, std::vector<Color> texels, WrapMode wrap)
+    : width_(width), height_(height), texels_(std::move(texels)), wrap_(wrap) {
+  if (width <= 0 || height <= 0 ||
+      texels_.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    throw std::invalid_argument("ImageTexture: " + std::to_string(texels_.size()) +
+                                " texels do not make a " + std::to_string(width) + " x " +
+                                std::to_string(height) + " image");
+}
+
+namespace {
+int wrap_index(int i, int n, WrapMode mode) {
+  if (mode == WrapMode::clamp) return std::clamp(i, 0, n - 1);
+  const int r = i % n;
+  return r < 0 ? r + n : r;
+}
+}  // namespace
+
+Color ImageTexture::texel(int x, int y) const {
+  x = wrap_index(x, width_, wrap_);
+  y = wrap_index(y, height_, wrap_);
+  return texels_[static_cast<std::size_t>(y) * width_ + x];
+}
+
+// [ch11-bilinear]
+Color ImageTexture::eval(Vec2f uv) const {
+  // Coordinates that are not numbers (a degenerate mesh's) look up texel (0, 0) rather than
+  // turning into an out-of-range integer.
+  if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return texel(0, 0);
+  // Continuous texel coordinates with texel centres at integers + 0.5; v = 0 is the bottom.
+  // The repeat mode first folds the coordinates into [0, 1) so that huge values keep their
+  // fraction's precision and fit in an int.
+  float u = uv.x, v = uv.y;
+  if (wrap_ == WrapMode::repeat) {
+    u -= std::floor(u);
+    v -= std::floor(v);
+  } else {
+    u = std::clamp(u, -1.0f, 2.0f);
+    v = std::clamp(v, -1.0f, 2.0f);
+  }
+  const float x = u * width_ - 0.5f, y = (1.0f - v) * height_ - 0.5f;
+  const float fx = std::floor(x), fy = std::floor(y);
+  const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+  const float tx = x - fx, ty = y - fy;
+  // Blend the four nearest texels.
+  return (texel(x0, y0) * (1 - tx) + texel(x0 + 1, y0) * tx) * (1 - ty) +
+         (texel(x0, y0 + 1) * (1 - tx) + texel(x0 + 1, y0 + 1) * tx) * ty;
+}
+// [ch11-bilinear]
+
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+std::shared_ptr<ImageTexture> load_image_texture(const std::string& path, ColorEncoding encoding,
+                                                 WrapMode wrap) {
+  int w = 0, h = 0, channels = 0;
+  std::vector<Color> texels;
+  auto fail = [&](const char* what) {
+    const char* reason = stbi_failure_reason();
+    return std::runtime_error("cannot load texture '" + path + "': " + (reason ? reason : what));
+  };
+  if (stbi_is_hdr(path.c_str())) {
+    float* data = stbi_loadf(path.c_str(), &w, &h, &channels, 3);
+    if (!data) throw fail("unreadable");
+    texels.resize(static_cast<std::size_t>(w) * h);
+    for (std::size_t i = 0; i < texels.size(); ++i)
+      texels[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
+    stbi_image_free(data);
+  } else {
+    unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+    if (!data) throw fail("unreadable");
+    // Decode through a 256-entry table: the curve costs a pow per channel otherwise.
+    float table[256];
+    for (int i = 0; i < 256; ++i)
+      table[i] = encoding == ColorEncoding::srgb ? srgb_to_linear(i / 255.0f) : i / 255.0f;
+    texels.resize(static_cast<std::size_t>(w) * h);
+    for (std::size_t i = 0; i < texels.size(); ++i)
+      texels[i] = {table[data[3 * i]], table[data[3 * i + 1]], table[data[3 * i + 2]]};
+    stbi_image_free(data);
+  }
+  return std::make_shared<ImageTexture>(w, h, std::move(texels), wrap);
+}
+
+}  // namespace rtk

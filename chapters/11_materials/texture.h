@@ -1,0 +1,96 @@
+/// \file
+/// Textures: colours that vary over a surface with its (u, v) coordinates.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "01_base/color.h"
+#include "10_sampling/vec2.h"
+
+namespace rtk {
+
+/// A colour as a function of texture coordinates.
+class Texture {
+ public:
+  virtual ~Texture() = default;
+  /// The colour at (u, v).
+  virtual Color eval(Vec2f uv) const = 0;
+};
+
+/// The same colour everywhere.
+class ConstantTexture final : public Texture {
+ public:
+  /// A texture of colour c.
+  explicit ConstantTexture(Color c) : color_(c) {}
+  Color eval(Vec2f) const override { return color_; }
+  /// The colour.
+  Color color() const { return color_; }
+
+ private:
+  Color color_;
+};
+
+/// What happens to coordinates outside [0, 1].
+enum class WrapMode {
+  repeat,  ///< the image tiles the plane
+  clamp,   ///< the border texels extend outward
+};
+
+/// How an 8-bit image file encodes its values.
+enum class ColorEncoding {
+  srgb,    ///< the sRGB transfer curve (photographs, painted textures): decoded to linear
+  linear,  ///< values are linear already (data maps)
+};
+
+/// An image looked up with bilinear interpolation between texel centres. Texture coordinate
+/// (0, 0) is the bottom-left corner of the image and (1, 1) the top-right (the OBJ
+/// convention); texel (x, y) with y = 0 the top row covers [x, x+1] / width by
+/// [h - y - 1, h - y] / height.
+class ImageTexture final : public Texture {
+ public:
+  /// An image of width x height linear colours, top row first; throws std::invalid_argument
+  /// for a non-positive size or a texel count that does not match.
+  ImageTexture(int width, int height, std::vector<Color> texels, WrapMode wrap = WrapMode::repeat);
+
+  Color eval(Vec2f uv) const override;
+  /// The texel at column x and row y (top row 0), after wrapping.
+  Color texel(int x, int y) const;
+  /// The image's width.
+  int width() const { return width_; }
+  /// The image's height.
+  int height() const { return height_; }
+
+ private:
+  int width_, height_;
+  std::vector<Color> texels_;
+  WrapMode wrap_;
+};
+
+/// Another texture seen through an affine map of its coordinates: eval(uv) =
+/// base(offset + scale * uv), the guide's MatteTextured parameters s0 and ds.
+class MappedTexture final : public Texture {
+ public:
+  /// base's coordinates are offset + scale * uv.
+  MappedTexture(std::shared_ptr<const Texture> base, Vec2f offset, Vec2f scale)
+      : base_(std::move(base)), offset_(offset), scale_(scale) {}
+  Color eval(Vec2f uv) const override { return base_->eval(offset_ + scale_ * uv); }
+
+ private:
+  std::shared_ptr<const Texture> base_;
+  Vec2f offset_, scale_;
+};
+
+/// The sRGB transfer curve inverted: an encoded value in [0, 1] to linear (IEC 61966-2-1).
+float srgb_to_linear(float encoded);
+
+/// Loads an image file as a texture through stb_image (PNG, JPEG, TGA, BMP, PPM/PGM, HDR,
+/// ...). Radiance .hdr files are linear; 8-bit files are decoded by `encoding`. Throws
+/// std::runtime_error naming the file and stb_image's reason when the file cannot be read.
+std::shared_ptr<ImageTexture> load_image_texture(const std::string& path,
+                                                 ColorEncoding encoding = ColorEncoding::srgb,
+                                                 WrapMode wrap = WrapMode::repeat);
+
+}  // namespace rtk

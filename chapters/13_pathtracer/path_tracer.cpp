@@ -1,0 +1,290 @@
+#include "13_pathtracer/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "01_base/timer.h"
+#include "13_pathtracer/ray_offset.h"
+
+namespace rtk {
+
+namespace {
+
+CameraParams with_aspect(CameraParams params, const RenderOptions& options) {
+  params.aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  return params;
+}
+
+float scene_radius(const TriangleMesh& mesh) {
+  const Box3f box = mesh.bounds();
+  if (mesh.vertices.empty()) return 1.0f;
+  const float r = 0.5f * length(box.upper - box.lower);
+  return r > 0.0f ? r : 1.0f;
+}
+
+// A shadow ray stops this fraction short of the sampled light point, so that it does not find
+// the light's own triangle there.
+constexpr float kShadowShortening = 1.0f - 1e-4f;
+
+}  // namespace
+
+// The state of one camera path between two batches of rays.
+struct PathTracer::Path {
+  Sampler sampler{SamplerType::sobol, 0};
+  int x = 0, y = 0;
+  float filter_weight = 1.0f;
+  Color throughput{1.0f};
+  Color radiance;
+  Color pending;          // next-event contribution waiting for its shadow ray
+  int depth = 0;          // scattering events so far
+  float prev_pdf = 0.0f;  // the density of the BSDF sample that made the current ray
+  bool prev_delta = true; // whether it came from a delta lobe (or the camera): no MIS then
+  Vec3f prev_p, prev_n;   // the previous vertex and its light-query normal (for pdf_li)
+  Ray ray;
+};
+
+// The rays of one round, for all live paths of a tile.
+struct PathTracer::Batch {
+  std::vector<Ray> shadow_rays;
+  std::vector<uint32_t> shadow_path;
+  std::vector<uint32_t> next;  // paths that continue
+};
+
+PathTracer::PathTracer(const RenderScene& scene, const RayKernels& kernels,
+                       const RenderOptions& options)
+    : scene_(scene),
+      kernels_(kernels),
+      options_(options),
+      camera_(with_aspect(scene.camera, options)),
+      filter_(options.filter, options.filter_radius) {
+  scene.validate();
+  // Lights are chosen in proportion to their power: a dim fill light gets few samples.
+  const float radius = scene_radius(scene.mesh);
+  std::vector<float> power;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = *scene.lights[i];
+    const float p = luminance(light.power(radius));
+    power.push_back(std::isfinite(p) && p > 0.0f ? p : 0.0f);
+    triangle_lights_.push_back(dynamic_cast<const TriangleLight*>(&light));
+    if (light.is_infinite()) infinite_lights_.push_back(static_cast<uint32_t>(i));
+  }
+  if (!power.empty()) light_choice_ = std::make_unique<Distribution1D>(power);
+}
+
+// [ch13-escaped]
+// A ray that leaves the scene sees the lights at infinity. Unless the ray came from the
+// camera or a delta lobe, light sampling could have found the same direction, and the power
+// heuristic weighs the two strategies.
+Color PathTracer::escaped(const Path& path, Vec3f dir) const {
+  Color sum;
+  for (uint32_t i : infinite_lights_) {
+    const Light& light = *scene_.lights[i];
+    const Color le = light.le(dir);
+    if (is_black(le)) continue;
+    float weight = 1.0f;
+    if (!path.prev_delta) {
+      const float light_pdf = light_choice_->pmf(static_cast<int>(i)) *
+                              light.pdf_li(LightQuery{path.prev_p, path.prev_n}, dir);
+      weight = power_heuristic(path.prev_pdf, light_pdf);
+    }
+    sum += le * weight;
+  }
+  return sum;
+}
+// [ch13-escaped]
+
+void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
+                       uint32_t index) const {
+  const Vec3f dir = normalize(ray.dir);
+  if (!hit.found()) {
+    path.radiance += path.throughput * escaped(path, dir);
+    return;
+  }
+  // The hit point: from the barycentrics (more accurate than org + t dir), at the ray's time.
+  const auto& tri = scene_.mesh.triangles[hit.prim];
+  Vec3f v[3];
+  for (int k = 0; k < 3; ++k) {
+    v[k] = scene_.mesh.vertices[tri[k]];
+    if (scene_.has_motion()) v[k] = v[k] + (scene_.vertices_t1[tri[k]] - v[k]) * ray.time;
+  }
+  const float b0 = 1.0f - hit.u - hit.v;
+  const Vec3f p = v[0] * b0 + v[1] * hit.u + v[2] * hit.v;
+  const Vec3f ng = normalize(cross(v[1] - v[0], v[2] - v[0]));
+  const Vec3f wo = -dir;
+  if (options_.eye_light) {
+    // [ch13-debug]
+    // The guide's debug renderer: |cos| between the ray and the surface. A back face (a hit
+    // from the side the normal points away from) is tinted red, so that a ray which leaked
+    // into a closed, outward-facing mesh and hit its far wall from inside shows up.
+    const float c = dot(ng, wo);
+    path.radiance = c >= 0.0f ? Color(c) : Color(-c, -0.15f * c, -0.15f * c);
+    // [ch13-debug]
+    return;
+  }
+
+  // [ch13-emission]
+  // Emission found by the path: counted in full when no light sample could have found it
+  // (the camera ray, a delta bounce), otherwise weighted against next-event estimation.
+  if (const int32_t li = scene_.triangle_light[hit.prim]; li != kNoLight) {
+    const TriangleLight& light = *triangle_lights_[li];
+    const Color le = light.emitted(wo);
+    if (!is_black(le)) {
+      float weight = 1.0f;
+      if (!path.prev_delta)
+        weight = power_heuristic(path.prev_pdf, light_choice_->pmf(li) * light.pdf_hit(path.prev_p, p));
+      path.radiance += path.throughput * le * weight;
+    }
+  }
+  // [ch13-emission]
+  if (path.depth >= options_.max_depth) return;
+
+  // The shading frame: the interpolated normal where the scene has one, on the geometric
+  // normal's side; the texture coordinates, or the barycentrics without them.
+  Vec3f ns = ng;
+  if (!scene_.normals.empty()) {
+    const Vec3f n = scene_.normals[tri[0]] * b0 + scene_.normals[tri[1]] * hit.u +
+                    scene_.normals[tri[2]] * hit.v;
+    const float len = length(n);
+    if (len > 0.0f && std::isfinite(len)) ns = n / len;
+    if (dot(ns, ng) < 0.0f) ns = -ns;
+  }
+  Vec2f uv{hit.u, hit.v};
+  if (!scene_.uvs.empty())
+    uv = scene_.uvs[tri[0]] * b0 + scene_.uvs[tri[1]] * hit.u + scene_.uvs[tri[2]] * hit.v;
+  const Material& material = scene_.materials[scene_.triangle_material[hit.prim]];
+  const Bsdf bsdf = material.make_bsdf(Frame(ns), uv);
+  const Vec3f ng_wo = dot(ng, wo) >= 0.0f ? ng : -ng;  // the geometric normal on wo's side
+  const LightQuery query{p, bsdf.transmissive() ? Vec3f(0.0f) : ng_wo};
+
+  // The random numbers of one bounce are always drawn, in this order, whether used or not,
+  // so that dimension d means the same thing in every path (Sobol stratification needs it).
+  const float u_light = path.sampler.get_1d();
+  const Vec2f u_light2 = path.sampler.get_2d();
+  const float u_lobe = path.sampler.get_1d();
+  const Vec2f u_bsdf = path.sampler.get_2d();
+  const float u_rr = path.sampler.get_1d();
+
+  // [ch13-nee]
+  // Next-event estimation: one light chosen by power, one point or direction on it, one
+  // shadow ray. Its weight against BSDF sampling is the power heuristic; delta lights take
+  // no part in MIS since BSDF sampling cannot find them.
+  if (light_choice_ && !bsdf.delta_only()) {
+    float pmf = 0.0f;
+    const int li = light_choice_->sample_discrete(u_light, &pmf);
+    const std::optional<LightSample> ls = scene_.lights[li]->sample_li(query, u_light2);
+    const bool same_side = bsdf.transmissive() || dot(ls ? ls->wi : wo, ng_wo) > 0.0f;
+    if (ls && ls->pdf > 0.0f && pmf > 0.0f && !is_black(ls->L) && same_side) {
+      const Color f = bsdf.eval(wo, ls->wi) * std::fabs(dot(ls->wi, ns));
+      if (!is_black(f)) {
+        const float light_pdf = pmf * ls->pdf;
+        const float weight = ls->delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, ls->wi));
+        path.pending = path.throughput * f * ls->L * (weight / light_pdf);
+        Ray shadow;
+        shadow.org = offset_ray_origin(p, dot(ls->wi, ng) > 0.0f ? ng : -ng);
+        shadow.dir = ls->wi;
+        shadow.time = ray.time;
+        shadow.tfar = std::isfinite(ls->distance) ? ls->distance * kShadowShortening
+                                                  : std::numeric_limits<float>::infinity();
+        batch.shadow_rays.push_back(shadow);
+        batch.shadow_path.push_back(index);
+      }
+    }
+  }
+  // [ch13-nee]
+
+  // [ch13-bounce]
+  // BSDF sampling continues the path. A direction on the other side of the geometric
+  // surface than a shading normal suggested would leak light through an opaque surface.
+  const std::optional<BsdfSample> bs = bsdf.sample(wo, u_lobe, u_bsdf);
+  if (!bs || is_black(bs->weight) || !is_finite(bs->weight)) return;
+  if (!bsdf.transmissive() && dot(bs->wi, ng_wo) <= 0.0f) return;
+  path.throughput *= bs->weight;
+  path.prev_pdf = bs->pdf;
+  path.prev_delta = bs->delta;
+  path.prev_p = p;
+  path.prev_n = query.n;
+  ++path.depth;
+
+  // Russian roulette: after rr_depth bounces a path survives with a probability that follows
+  // its throughput, and a survivor's weight grows to keep the estimate unbiased.
+  if (path.depth >= options_.rr_depth) {
+    const float survive = std::min(0.95f, max_component(path.throughput));
+    if (!(u_rr < survive)) return;
+    path.throughput *= 1.0f / survive;
+  }
+  path.ray = Ray{};
+  path.ray.org = offset_ray_origin(p, dot(bs->wi, ng) > 0.0f ? ng : -ng);
+  path.ray.dir = bs->wi;
+  path.ray.time = ray.time;
+  batch.next.push_back(index);
+  // [ch13-bounce]
+}
+
+// [ch13-tile]
+void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t count,
+                             Framebuffer& fb, RenderStats& stats) const {
+  const int w = tile.x1 - tile.x0, h = tile.y1 - tile.y0;
+  if (w <= 0 || h <= 0) return;
+  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  std::vector<Path> paths(n);
+  std::vector<uint32_t> live;
+  std::vector<Ray> rays;
+  std::vector<Hit> hits;
+  std::vector<uint8_t> blocked;
+  Batch batch;
+  const Sampler prototype(options_.sampler, options_.seed);
+  for (uint32_t s = first_sample; s < first_sample + count; ++s) {
+    // Camera rays: film position from the pixel filter, lens position, shutter time.
+    live.clear();
+    for (size_t i = 0; i < n; ++i) {
+      Path& path = paths[i];
+      path = Path{};
+      path.sampler = prototype;
+      path.x = tile.x0 + static_cast<int>(i % w);
+      path.y = tile.y0 + static_cast<int>(i / w);
+      path.sampler.start_pixel_sample(path.x, path.y, s);
+      const FilterSample fs = filter_.sample(path.sampler.get_pixel_2d());
+      const Vec2f film{(path.x + 0.5f + fs.offset.x) / options_.width,
+                       (path.y + 0.5f + fs.offset.y) / options_.height};
+      const Vec2f lens = path.sampler.get_2d();
+      const float time = path.sampler.get_1d();
+      path.filter_weight = fs.weight;
+      path.ray = camera_.generate_ray(film, lens, time);
+      live.push_back(static_cast<uint32_t>(i));
+    }
+    // Rounds: one batch of closest-hit rays, shading, one batch of shadow rays.
+    while (!live.empty()) {
+      rays.resize(live.size());
+      hits.resize(live.size());
+      for (size_t k = 0; k < live.size(); ++k) rays[k] = paths[live[k]].ray;
+      Timer timer;
+      kernels_.intersect(rays, hits);
+      stats.kernel_seconds += timer.seconds();
+      stats.rays += rays.size();
+      batch.shadow_rays.clear();
+      batch.shadow_path.clear();
+      batch.next.clear();
+      for (size_t k = 0; k < live.size(); ++k) shade(paths[live[k]], rays[k], hits[k], batch, live[k]);
+      if (!batch.shadow_rays.empty()) {
+        blocked.resize(batch.shadow_rays.size());
+        timer.reset();
+        kernels_.occluded(batch.shadow_rays, blocked);
+        stats.kernel_seconds += timer.seconds();
+        stats.rays += blocked.size();
+        stats.shadow_rays += blocked.size();
+        for (size_t k = 0; k < blocked.size(); ++k) {
+          Path& path = paths[batch.shadow_path[k]];
+          if (!blocked[k]) path.radiance += path.pending;
+          path.pending = Color{};
+        }
+      }
+      live.swap(batch.next);
+    }
+    for (const Path& path : paths) fb.add_sample(path.x, path.y, path.radiance, path.filter_weight);
+    stats.samples += n;
+  }
+}
+// [ch13-tile]
+
+}  // namespace rtk

@@ -1,0 +1,70 @@
+/// \file
+/// The render scene: everything the path tracer needs to make an image, independent of the
+/// file it came from. One triangle mesh (all objects merged, so that one acceleration
+/// structure holds them and a hit's primID names the triangle), per-triangle materials,
+/// optional per-vertex normals and texture coordinates, optional vertex positions at shutter
+/// time 1 (motion blur), the lights of chapter 12 and the camera of chapter 10.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "01_base/triangle_mesh.h"
+#include "10_sampling/camera.h"
+#include "10_sampling/vec2.h"
+#include "11_materials/material.h"
+#include "12_lights/area_light.h"
+#include "12_lights/light.h"
+
+namespace rtk {
+
+/// The value of RenderScene::triangle_light for a triangle that does not emit.
+inline constexpr int32_t kNoLight = -1;
+
+// [ch13-scene]
+/// A scene ready to render. The vectors that hold one entry per vertex (`normals`, `uvs`,
+/// `vertices_t1`) are either empty (the attribute is absent for the whole scene) or exactly as
+/// long as `mesh.vertices`. Those that hold one entry per triangle (`triangle_material`,
+/// `triangle_light`) are as long as `mesh.triangles`. validate() checks all of this.
+///
+/// Emitting surfaces are ordinary triangles of the mesh whose triangle_light names one of the
+/// `lights` (a TriangleLight): rays hit them like any other surface, and the light samples
+/// them for next-event estimation. The other lights (point, directional, distant, ambient,
+/// environment) have no geometry.
+struct RenderScene {
+  TriangleMesh mesh;                        ///< every triangle of the scene (time 0 if it moves)
+  std::vector<Vec3f> vertices_t1;           ///< positions at shutter time 1, or empty if static
+  std::vector<Vec3f> normals;               ///< per-vertex shading normals (zero: use the face's)
+  std::vector<Vec2f> uvs;                   ///< per-vertex texture coordinates
+  std::vector<uint32_t> triangle_material;  ///< per triangle: an index into `materials`
+  std::vector<int32_t> triangle_light;      ///< per triangle: an index into `lights`, or kNoLight
+  std::vector<Material> materials;          ///< chapter 11's materials
+  std::vector<std::shared_ptr<const Light>> lights;  ///< chapter 12's lights
+  CameraParams camera;  ///< the view; its aspect is replaced by the image's width / height
+
+  /// Whether any vertex moves during the shutter interval.
+  bool has_motion() const { return !vertices_t1.empty(); }
+
+  /// Adds a material and returns its index.
+  uint32_t add_material(Material material);
+  /// Adds a light without geometry (point, directional, distant, ambient, environment).
+  void add_light(std::shared_ptr<const Light> light);
+  /// Adds an emitting triangle: the light goes to `lights` and its triangle to the mesh with
+  /// material `material` (whose emission should match the light's radiance), so that rays can
+  /// hit it. Returns the triangle's primID. In a scene with motion the light stands still.
+  uint32_t add_triangle_light(std::shared_ptr<const TriangleLight> light, uint32_t material);
+  /// Adds an area light made of `triangles`, all of radiance `radiance`: one emitting,
+  /// otherwise black material for all of them, and each triangle as add_triangle_light() adds it.
+  void add_area_light(std::span<const std::shared_ptr<const TriangleLight>> triangles, Color radiance);
+
+  /// Throws std::invalid_argument naming the first inconsistency: an attribute vector of the
+  /// wrong length, a vertex, material or light index out of range, a triangle_light that is
+  /// not a TriangleLight, a non-finite vertex.
+  void validate() const;
+};
+// [ch13-scene]
+
+}  // namespace rtk
