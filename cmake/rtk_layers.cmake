@@ -6,9 +6,6 @@
 # The libraries of lib/ beneath the chapters (they need chapter 1 only), and the mains.
 set(RTK_LOWER_LIBS rtk_defaults rtk_io rtk_image rtk_replay rtk_testing rtk_test_main rtk_bench_main)
 
-# Links that still go up while the chapters are being reordered (own->other).
-set(RTK_LAYER_EXCEPTIONS "6->7")
-
 # rtk_check_chapter_links()
 function(rtk_check_chapter_links)
   get_property(chapter_dirs DIRECTORY ${PROJECT_SOURCE_DIR} PROPERTY SUBDIRECTORIES)
@@ -30,7 +27,7 @@ function(rtk_check_chapter_links)
         string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" item "${item}")
         if(item MATCHES "^ch([0-9][0-9])_")
           math(EXPR other "${CMAKE_MATCH_1}")
-          if(other GREATER own AND NOT "${own}->${other}" IN_LIST RTK_LAYER_EXCEPTIONS)
+          if(other GREATER own)
             message(FATAL_ERROR "layers: ${target} (chapters/${name}) links ${item}, a later chapter")
           endif()
         elseif(item MATCHES "^rtk_" AND NOT item IN_LIST RTK_LOWER_LIBS)

@@ -13,6 +13,7 @@
 #include "01_base/ray.h"
 #include "02_bvh2/build_tree.h"
 #include "02_bvh2/node_ref.h"
+#include "02_bvh2/trace_kernels.h"
 #include "02_bvh2/triangle1.h"
 
 namespace rtk {
@@ -62,7 +63,8 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
   BVH2 bvh;
   bvh.leaves.layout = std::string(L::kName);
   if (tree.empty()) return bvh;
-  bvh.bounds = tree.root.box;
+  const float margin = rounding_margin(tree.root.box);
+  bvh.bounds = grown(tree.root.box, margin);
   bvh.depth = tree_depth(tree);
   if (bvh.depth + 1 > kBvh2StackSize)
     throw std::invalid_argument("a binary tree of depth " + std::to_string(bvh.depth) +
@@ -87,8 +89,9 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
     if (in.num_children != 2)
       throw std::invalid_argument("binary node " + std::to_string(order[k]) + " has " +
                                   std::to_string(in.num_children) + " children");
-    const Box3f& l = in.children[0].box;
-    const Box3f& r = in.children[1].box;
+    // Each box grown by the rounding margin (build_tree.h), so that no rounding culls a hit.
+    const Box3f l = grown(in.children[0].box, margin);
+    const Box3f r = grown(in.children[1].box, margin);
     Node2& out = bvh.nodes[k];
     for (int axis = 0; axis < 3; ++axis) {
       float* row = axis == 0 ? out.x : axis == 1 ? out.y : out.z;
@@ -105,22 +108,23 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
 }
 // [ch02-make-bvh2]
 
-// The kernels, one per ISA: rays[i] gives hits[i] (closest hit) or occluded[i] (1 if anything
-// blocks [tnear, tfar], else 0). An array of independent single rays per call amortises the
-// dispatch. Invalid rays (rtk::is_valid) miss. Throws std::invalid_argument when the spans
-// differ in length or the leaves are not triangle1.
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh2(const BVH2& bvh, std::span<const Ray> rays,
-                                             std::span<Hit> hits))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh2(const BVH2& bvh, std::span<const Ray> rays,
-                                            std::span<uint8_t> occluded))
+// [ch02-kernels]
+/// The BVH2 kernels of each ISA (triangle1 leaves, Möller-Trumbore): `structure` is a BVH2.
+/// An array of independent single rays per call amortises the dispatch. Throws
+/// std::invalid_argument when the spans differ in length.
+RTK_DECLARE_FOR_EACH_ISA(TraceKernels bvh2_kernels())
 
-/// The closest hits of `rays` with the kernels of `isa`.
+/// The closest hits of `rays` with the kernels of `isa`. Throws std::invalid_argument when the
+/// spans differ in length or the leaves are not triangle1.
 inline void intersect(Isa isa, const BVH2& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
-  RTK_PICK_ISA(isa, intersect_bvh2)(bvh, rays, hits);
+  require_layout(bvh.leaves, Triangle1Layout::kName);
+  RTK_PICK_ISA(isa, bvh2_kernels)().intersect(&bvh, rays, hits);
 }
-/// The occlusion of `rays` with the kernels of `isa`.
+/// The occlusion of `rays` with the kernels of `isa`: 1 if anything blocks [tnear, tfar], else 0.
 inline void occluded(Isa isa, const BVH2& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
-  RTK_PICK_ISA(isa, occluded_bvh2)(bvh, rays, occluded);
+  require_layout(bvh.leaves, Triangle1Layout::kName);
+  RTK_PICK_ISA(isa, bvh2_kernels)().occluded(&bvh, rays, occluded);
 }
+// [ch02-kernels]
 
 }  // namespace rtk

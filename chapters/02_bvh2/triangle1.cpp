@@ -1,13 +1,8 @@
 #include "02_bvh2/triangle1.h"
 
-namespace rtk {
+#include "02_bvh2/zero_area.h"
 
-bool has_zero_area(Vec3f p0, Vec3f p1, Vec3f p2) {
-  const double ax = double(p1.x) - p0.x, ay = double(p1.y) - p0.y, az = double(p1.z) - p0.z;
-  const double bx = double(p2.x) - p0.x, by = double(p2.y) - p0.y, bz = double(p2.z) - p0.z;
-  const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
-  return nx == 0.0 && ny == 0.0 && nz == 0.0;
-}
+namespace rtk {
 
 void Triangle1Layout::pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Triangle1* out) {
   for (size_t i = 0; i < prims.size(); ++i) {
@@ -17,7 +12,7 @@ void Triangle1Layout::pack(const TriangleMesh& mesh, std::span<const uint32_t> p
     t = Triangle1{p0, prim, p1 - p0, 0, p2 - p0, 0};
     // Collinear vertices can give float edges that are not exactly parallel, and then a tiny
     // but non-zero determinant: zero the edges so that the determinant is exactly zero.
-    if (has_zero_area(p0, p1, p2)) t.e1 = t.e2 = Vec3f(0.0f);
+    if (is_zero_area(p0, p1, p2)) t.e1 = t.e2 = Vec3f(0.0f);
   }
 }
 

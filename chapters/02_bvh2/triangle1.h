@@ -16,7 +16,8 @@ namespace rtk {
 /// A triangle as Möller and Trumbore's test wants it ("Fast, minimum storage ray-triangle
 /// intersection", JGT 1997): the first vertex and the two edges leaving it, so that the test
 /// does no subtraction of vertices. 48 bytes: three 16-byte rows, the primID in the first.
-/// A triangle of zero area is stored with zero edges, which the test can never hit.
+/// A triangle of zero area (is_zero_area) is stored with zero edges, which the test can never
+/// hit.
 struct alignas(16) Triangle1 {
   Vec3f v0;
   uint32_t prim;
@@ -36,9 +37,5 @@ struct Triangle1Layout {
   /// Fills one Triangle1 per entry of `prims`.
   static void pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Triangle1* out);
 };
-
-/// Whether three points span no area: their edges' cross product is zero in double precision,
-/// the test the brute-force oracle makes (exact for coordinates of similar magnitude).
-bool has_zero_area(Vec3f p0, Vec3f p1, Vec3f p2);
 
 }  // namespace rtk

@@ -15,6 +15,7 @@
 #include "01_base/ray.h"
 #include "02_bvh2/build_tree.h"
 #include "02_bvh2/node_ref.h"
+#include "02_bvh2/trace_kernels.h"
 #include "02_bvh2/triangle1.h"
 #include "03_bvh4/traversal_stats.h"
 #include "03_bvh4/tricks.h"
@@ -87,7 +88,8 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
   BVHN<N> bvh;
   bvh.leaves.layout = std::string(L::kName);
   if (tree.empty()) return bvh;
-  bvh.bounds = tree.root.box;
+  const float margin = rounding_margin(tree.root.box);
+  bvh.bounds = grown(tree.root.box, margin);
   bvh.depth = tree_depth(tree);
   if (bvh.depth > kBvhMaxDepth)
     throw std::invalid_argument("a tree of depth " + std::to_string(bvh.depth) +
@@ -119,7 +121,8 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
     for (int c = 0; c < N; ++c) {
       const bool used = c < in.num_children;
       const auto& child = in.children[size_t(used ? c : 0)];
-      const Box3f box = used ? child.box : Box3f(Vec3f(inf), Vec3f(inf));
+      // Each box grown by chapter 2's rounding margin, so that no rounding culls a hit.
+      const Box3f box = used ? grown(child.box, margin) : Box3f(Vec3f(inf), Vec3f(inf));
       out.lower_x[c] = box.lower.x, out.upper_x[c] = box.upper.x;
       out.lower_y[c] = box.lower.y, out.upper_y[c] = box.upper.y;
       out.lower_z[c] = box.lower.z, out.upper_z[c] = box.upper.z;
@@ -133,75 +136,49 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
 }
 // [ch03-make-bvh]
 
-// The kernels, one set per ISA and width. rays[i] gives hits[i] (closest hit) or occluded[i]
-// (1 if anything blocks [tnear, tfar], else 0); invalid rays (rtk::is_valid) miss. The plain
-// entries run all tricks without statistics (the fast path); the `_tricks` entries run any
-// configuration of kTrickConfigs, counting into `stats` when it is not null. All throw
-// std::invalid_argument when the spans differ in length, the leaves are not triangle1, or the
-// trick configuration is not one of kTrickConfigs.
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh4(const BVH4& bvh, std::span<const Ray> rays, std::span<Hit> hits))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh4(const BVH4& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded))
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh4_tricks(const BVH4& bvh, const Tricks& tricks, std::span<const Ray> rays,
-                                                    std::span<Hit> hits, TraversalStats* stats))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh4_tricks(const BVH4& bvh, const Tricks& tricks, std::span<const Ray> rays,
-                                                   std::span<uint8_t> occluded, TraversalStats* stats))
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh8(const BVH8& bvh, std::span<const Ray> rays, std::span<Hit> hits))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh8(const BVH8& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded))
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh8_tricks(const BVH8& bvh, const Tricks& tricks, std::span<const Ray> rays,
-                                                    std::span<Hit> hits, TraversalStats* stats))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh8_tricks(const BVH8& bvh, const Tricks& tricks, std::span<const Ray> rays,
-                                                   std::span<uint8_t> occluded, TraversalStats* stats))
+// [ch03-kernels]
+// The kernels, one set per ISA and node width (4, 8, 16), with triangle1 leaves. rays[i] gives
+// hits[i] (closest hit) or occluded[i] (1 if anything blocks [tnear, tfar], else 0); invalid
+// rays (rtk::is_valid) miss. bvhn_kernels<N>() runs all tricks without statistics (the fast
+// path, `structure` a BVHN<N>); the `_tricks` entries run any configuration of kTrickConfigs,
+// counting into `stats` when it is not null. All throw std::invalid_argument when the spans
+// differ in length or the trick configuration is not one of kTrickConfigs.
+RTK_DECLARE_FOR_EACH_ISA(template <int N> TraceKernels bvhn_kernels())
+RTK_DECLARE_FOR_EACH_ISA(template <int N> void intersect_bvhn_tricks(const BVHN<N>& bvh, const Tricks& tricks,
+                                                                     std::span<const Ray> rays,
+                                                                     std::span<Hit> hits, TraversalStats* stats))
+RTK_DECLARE_FOR_EACH_ISA(template <int N> void occluded_bvhn_tricks(const BVHN<N>& bvh, const Tricks& tricks,
+                                                                    std::span<const Ray> rays,
+                                                                    std::span<uint8_t> occluded, TraversalStats* stats))
 
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh16(const BVH16& bvh, std::span<const Ray> rays, std::span<Hit> hits))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh16(const BVH16& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded))
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh16_tricks(const BVH16& bvh, const Tricks& tricks, std::span<const Ray> rays,
-                                                     std::span<Hit> hits, TraversalStats* stats))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh16_tricks(const BVH16& bvh, const Tricks& tricks, std::span<const Ray> rays,
-                                                    std::span<uint8_t> occluded, TraversalStats* stats))
-
-/// The per-ISA entry points of one node width, so that the dispatchers below are written once.
-template <int N> struct BvhEntries;
-template <> struct BvhEntries<4> {
-  static auto pick_intersect(Isa isa) { return RTK_PICK_ISA(isa, intersect_bvh4); }
-  static auto pick_occluded(Isa isa) { return RTK_PICK_ISA(isa, occluded_bvh4); }
-  static auto pick_intersect_tricks(Isa isa) { return RTK_PICK_ISA(isa, intersect_bvh4_tricks); }
-  static auto pick_occluded_tricks(Isa isa) { return RTK_PICK_ISA(isa, occluded_bvh4_tricks); }
-};
-template <> struct BvhEntries<8> {
-  static auto pick_intersect(Isa isa) { return RTK_PICK_ISA(isa, intersect_bvh8); }
-  static auto pick_occluded(Isa isa) { return RTK_PICK_ISA(isa, occluded_bvh8); }
-  static auto pick_intersect_tricks(Isa isa) { return RTK_PICK_ISA(isa, intersect_bvh8_tricks); }
-  static auto pick_occluded_tricks(Isa isa) { return RTK_PICK_ISA(isa, occluded_bvh8_tricks); }
-};
-template <> struct BvhEntries<16> {
-  static auto pick_intersect(Isa isa) { return RTK_PICK_ISA(isa, intersect_bvh16); }
-  static auto pick_occluded(Isa isa) { return RTK_PICK_ISA(isa, occluded_bvh16); }
-  static auto pick_intersect_tricks(Isa isa) { return RTK_PICK_ISA(isa, intersect_bvh16_tricks); }
-  static auto pick_occluded_tricks(Isa isa) { return RTK_PICK_ISA(isa, occluded_bvh16_tricks); }
-};
-
-/// Closest hits through a BVH4, BVH8 or BVH16 with the kernels of `isa`, all tricks on.
+/// Closest hits through a BVH4, BVH8 or BVH16 with the kernels of `isa`, all tricks on. Throws
+/// std::invalid_argument unless the leaves are triangle1 (and like the kernels).
 template <int N>
 void intersect(Isa isa, const BVHN<N>& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
-  BvhEntries<N>::pick_intersect(isa)(bvh, rays, hits);
+  require_layout(bvh.leaves, Triangle1Layout::kName);
+  RTK_PICK_ISA(isa, bvhn_kernels<N>)().intersect(&bvh, rays, hits);
 }
 /// Occlusion through a BVH4, BVH8 or BVH16 with the kernels of `isa`, all tricks on.
 template <int N>
 void occluded(Isa isa, const BVHN<N>& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
-  BvhEntries<N>::pick_occluded(isa)(bvh, rays, occluded);
+  require_layout(bvh.leaves, Triangle1Layout::kName);
+  RTK_PICK_ISA(isa, bvhn_kernels<N>)().occluded(&bvh, rays, occluded);
 }
 /// Closest hits with a chosen trick configuration (one of kTrickConfigs), counting into
 /// `stats` when it is not null.
 template <int N>
 void intersect(Isa isa, const BVHN<N>& bvh, const Tricks& tricks, std::span<const Ray> rays,
                std::span<Hit> hits, TraversalStats* stats = nullptr) {
-  BvhEntries<N>::pick_intersect_tricks(isa)(bvh, tricks, rays, hits, stats);
+  require_layout(bvh.leaves, Triangle1Layout::kName);
+  RTK_PICK_ISA(isa, intersect_bvhn_tricks<N>)(bvh, tricks, rays, hits, stats);
 }
 /// Occlusion with a chosen trick configuration, counting into `stats` when it is not null.
 template <int N>
 void occluded(Isa isa, const BVHN<N>& bvh, const Tricks& tricks, std::span<const Ray> rays,
               std::span<uint8_t> occluded, TraversalStats* stats = nullptr) {
-  BvhEntries<N>::pick_occluded_tricks(isa)(bvh, tricks, rays, occluded, stats);
+  require_layout(bvh.leaves, Triangle1Layout::kName);
+  RTK_PICK_ISA(isa, occluded_bvhn_tricks<N>)(bvh, tricks, rays, occluded, stats);
 }
+// [ch03-kernels]
 
 }  // namespace rtk

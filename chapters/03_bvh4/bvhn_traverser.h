@@ -307,6 +307,26 @@ void occluded_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<uint
   else (void)stats;
 }
 
+// [ch03-batch-kernels]
+/// The batch kernels of an N-wide BVH whose leaves Leaf reads, all tricks on, in the form every
+/// structure hands out (02_bvh2/trace_kernels.h): `structure` is the BVHN<N>. Chapters 6 to 9
+/// make their kernels with this too.
+template <int N, class Leaf>
+void intersect_batch(const void* structure, std::span<const Ray> rays, std::span<Hit> hits) {
+  require_same_size(rays.size(), hits.size());
+  intersect_rays<N, Leaf, Tricks{}, false>(*static_cast<const BVHN<N>*>(structure), rays, hits, nullptr);
+}
+template <int N, class Leaf>
+void occluded_batch(const void* structure, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+  require_same_size(rays.size(), occluded.size());
+  occluded_rays<N, Leaf, Tricks{}, false>(*static_cast<const BVHN<N>*>(structure), rays, occluded, nullptr);
+}
+template <int N, class Leaf>
+constexpr TraceKernels bvhn_batch_kernels() {
+  return {&intersect_batch<N, Leaf>, &occluded_batch<N, Leaf>};
+}
+// [ch03-batch-kernels]
+
 /// The kernels of one width and leaf intersector for every configuration of kTrickConfigs, with
 /// and without statistics, chosen at run time from a table.
 template <int N, class Leaf>
@@ -328,9 +348,8 @@ struct BvhNKernels {
   }
 
   /// The table index of a configuration, or an exception naming the compiled ones.
-  static size_t index(const BVHN<N>& bvh, const Tricks& tricks, bool with_stats, size_t rays, size_t results) {
+  static size_t index(const Tricks& tricks, bool with_stats, size_t rays, size_t results) {
     require_same_size(rays, results);
-    require_layout(bvh.leaves, Leaf::kLayout);
     const size_t i = trick_config_index(tricks);
     if (i == kTrickConfigCount)
       throw std::invalid_argument("this trick configuration is not compiled; the compiled ones are: " +
@@ -341,12 +360,12 @@ struct BvhNKernels {
   static void intersect(const BVHN<N>& bvh, const Tricks& tricks, std::span<const Ray> rays,
                         std::span<Hit> hits, TraversalStats* stats) {
     static constexpr auto table = intersect_table(std::make_index_sequence<kTrickConfigCount>{});
-    table[index(bvh, tricks, stats != nullptr, rays.size(), hits.size())](bvh, rays, hits, stats);
+    table[index(tricks, stats != nullptr, rays.size(), hits.size())](bvh, rays, hits, stats);
   }
   static void occluded(const BVHN<N>& bvh, const Tricks& tricks, std::span<const Ray> rays,
                        std::span<uint8_t> occluded, TraversalStats* stats) {
     static constexpr auto table = occluded_table(std::make_index_sequence<kTrickConfigCount>{});
-    table[index(bvh, tricks, stats != nullptr, rays.size(), occluded.size())](bvh, rays, occluded, stats);
+    table[index(tricks, stats != nullptr, rays.size(), occluded.size())](bvh, rays, occluded, stats);
   }
 };
 

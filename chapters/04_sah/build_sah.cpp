@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "04_sah/binning.h"
+#include "04_sah/node_filling.h"
 #include "04_sah/occluder_order.h"
 #include "04_sah/prim_set.h"
 #include "04_sah/rotations.h"
@@ -63,49 +64,16 @@ class Builder {
   }
 
  private:
-  // [ch04-fill-node]
-  /// Fills one node: split the set, then keep splitting the child whose split gains most
-  /// until the node has N children or no split gains anything. A free slot costs no traversal
-  /// step, so inside the node a split is worth making whenever it lowers the intersection
-  /// term, even where the binary leaf test would have kept a leaf. Children stay in the order
-  /// of their ranges, which is the spatial order along the split axes.
-  ///
-  /// Past kMedianDepth levels the SAH has produced a degenerate chain (centroids spaced
-  /// exponentially can make every split peel off a few primitives), and the node is filled
-  /// with splits in the middle of the largest child's range instead: the levels left are then
-  /// at most log_N of the primitive count, and traversal stacks stay within their bounds.
+  /// Fills one node with the skeleton of node_filling.h; a split is split_set() below.
   int fill_node(const PrimSet& set, std::array<PrimSet, N>& kids, int depth) {
-    const bool median = depth >= kMedianDepth;
-    kids[0] = set;
-    int k = 1;
-    while (k < N) {
-      int best = -1;
-      for (int i = 0; i < k; ++i) {
-        // (The set itself wants a split, so the first one is always made.)
-        const bool candidate =
-            median ? kids[i].size() > uint32_t(options_.max_leaf_size) || k == 1
-                   : kids[i].wants_split || (kids[i].split.valid() && kids[i].gain > 0.0);
-        const bool better = best < 0 || (median ? kids[i].size() > kids[best].size()
-                                                : kids[i].gain > kids[best].gain);
-        if (candidate && better) best = i;
-      }
-      if (best < 0) break;
-      bool fallback = false;
-      PrimSet chosen = kids[best];
+    return sah::fill_node<N>(set, kids, depth, options_.max_leaf_size, [&](PrimSet chosen, bool median) {
       if (median) chosen.split = Split{};  // split_set() then cuts the range in the middle
-      auto [left, right] = split_set(chosen, refs_, options_, fallback);
+      bool fallback = false;
+      auto halves = split_set(chosen, refs_, options_, fallback);
       counters_.fallback += fallback ? 1 : 0;
-      for (int i = k; i > best + 1; --i) kids[i] = kids[i - 1];
-      kids[best] = left;
-      kids[best + 1] = right;
-      ++k;
-    }
-    if (median)
-      for (int i = 0; i < k; ++i)
-        kids[i].wants_split = kids[i].size() > uint32_t(options_.max_leaf_size);
-    return k;
+      return halves;
+    });
   }
-  // [ch04-fill-node]
 
   Child leaf(const PrimSet& s) {
     ++counters_.leaves;
@@ -117,36 +85,14 @@ class Builder {
   }
 
   // [ch04-small-job]
-  /// A small job: one thread builds the whole subtree, depth first with an explicit stack (a
-  /// badly balanced subtree can be deep), then rotates and orders it.
+  /// A small job: one thread builds the whole subtree, depth first (node_filling.h), then
+  /// rotates and orders it.
   std::unique_ptr<Fragment<N>> build_small(const PrimSet& root, int depth) {
     auto fragment = std::make_unique<Fragment<N>>();
     auto& nodes = fragment->nodes;
-    struct Work {
-      PrimSet set;
-      int64_t referrer;  // parent index * N + slot, or -1 for the root
-      int depth;
-    };
-    std::vector<Work> stack{{root, -1, depth}};
-    std::array<PrimSet, N> kids;
-    while (!stack.empty()) {
-      const Work work = stack.back();
-      stack.pop_back();
-      const uint32_t index = uint32_t(nodes.size());
-      if (work.referrer >= 0)
-        nodes[size_t(work.referrer / N)].children[size_t(work.referrer % N)].index = index;
-      const int k = fill_node(work.set, kids, work.depth);
-      Node& node = nodes.emplace_back();
-      node.num_children = k;
-      for (int i = k - 1; i >= 0; --i) {  // pushed last to first, so built first to last
-        if (kids[i].wants_split) {
-          node.children[i].box = kids[i].bounds;
-          stack.push_back({kids[i], int64_t(index) * N + i, work.depth + 1});
-        } else {
-          node.children[i] = leaf(kids[i]);
-        }
-      }
-    }
+    build_depth_first<N>(
+        nodes, root, depth, [&](const PrimSet& set, auto& kids, int d) { return fill_node(set, kids, d); },
+        [&](const PrimSet& set) { return leaf(set); });
     // Tree rotations
     if (options_.rotations) {
       const size_t applied = rotate_tree<N>(nodes, kRotationRounds);
@@ -243,21 +189,6 @@ void place(const Fragment<N>& fragment, uint32_t offset, typename BuildTree<N>::
 }
 // [ch04-assemble]
 
-void check_options(const SahBuildOptions& o) {
-  auto fail = [](const std::string& what) {
-    throw std::invalid_argument("build_binned_sah: " + what);
-  };
-  if (o.bins < 2 || o.bins > kMaxSahBins)
-    fail("bins must be in [2, " + std::to_string(kMaxSahBins) + "], got " + std::to_string(o.bins));
-  if (o.max_leaf_size < 1)
-    fail("max_leaf_size must be at least 1, got " + std::to_string(o.max_leaf_size));
-  if (!std::isfinite(o.traversal_cost) || o.traversal_cost < 0.0f)
-    fail("traversal_cost must be finite and not negative");
-  if (!std::isfinite(o.intersection_cost) || o.intersection_cost <= 0.0f)
-    fail("intersection_cost must be finite and positive");
-  if (o.threads < 0)
-    fail("threads must be 0 (the caller's arena) or positive, got " + std::to_string(o.threads));
-}
 
 /// The builder's own copy of the references: valid ones only, in input order, with -0 turned
 /// into +0 (x + 0 does that) so that minimum and maximum never have to choose between two
@@ -359,7 +290,7 @@ template <int N>
 BuildTree<N> build_binned_sah(std::span<const PrimRef> refs, const SahBuildOptions& options,
                               SahBuildStats* stats) {
   static_assert(N == 2 || N == 4 || N == 8 || N == 16, "nodes of 2, 4, 8 or 16 children");
-  sah::check_options(options);
+  check_sah_options(options, "build_binned_sah");
   if (refs.size() > size_t(std::numeric_limits<uint32_t>::max()) - 1)
     throw std::length_error("build_binned_sah: more than 2^32 - 2 primitive references");
   if (options.threads == 0) return sah::build<N>(refs, options, stats);
@@ -375,5 +306,19 @@ template BuildTree<8> build_binned_sah<8>(std::span<const PrimRef>, const SahBui
                                           SahBuildStats*);
 template BuildTree<16> build_binned_sah<16>(std::span<const PrimRef>, const SahBuildOptions&,
                                             SahBuildStats*);
+
+void check_sah_options(const SahBuildOptions& o, const std::string& who) {
+  auto fail = [&](const std::string& what) { throw std::invalid_argument(who + ": " + what); };
+  if (o.bins < 2 || o.bins > kMaxSahBins)
+    fail("bins must be in [2, " + std::to_string(kMaxSahBins) + "], got " + std::to_string(o.bins));
+  if (o.max_leaf_size < 1)
+    fail("max_leaf_size must be at least 1, got " + std::to_string(o.max_leaf_size));
+  if (!std::isfinite(o.traversal_cost) || o.traversal_cost < 0.0f)
+    fail("traversal_cost must be finite and not negative");
+  if (!std::isfinite(o.intersection_cost) || o.intersection_cost <= 0.0f)
+    fail("intersection_cost must be finite and positive");
+  if (o.threads < 0)
+    fail("threads must be 0 (the caller's arena) or positive, got " + std::to_string(o.threads));
+}
 
 }  // namespace rtk

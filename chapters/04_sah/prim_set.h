@@ -27,6 +27,8 @@ struct PrimSet {
   double gain = 0.0;
 
   uint32_t size() const { return end - begin; }
+  /// Whether binning found a split at all.
+  bool splittable() const { return split.valid(); }
 };
 
 /// Chooses a set's split from its bins and decides leaf or node (the SAH leaf test).

@@ -3,6 +3,8 @@
 /// decide how it divides its work between threads.
 #pragma once
 
+#include <string>
+
 #include <cstddef>
 #include <cstdint>
 
@@ -92,5 +94,10 @@ struct SahBuildStats {
   size_t fallback_splits = 0;  ///< splits in the middle of the range: no bin could separate
   size_t rotations = 0;        ///< tree rotations applied
 };
+
+/// Throws std::invalid_argument, naming `who` and the option, unless the options are usable:
+/// 2 to kMaxSahBins bins, a leaf size of at least 1, finite costs (intersection above zero),
+/// a thread count of 0 or more. Chapter 5's builder checks its SAH part with it too.
+void check_sah_options(const SahBuildOptions& options, const std::string& who);
 
 }  // namespace rtk

@@ -11,7 +11,7 @@
 #include "02_bvh2/median_builder.h"
 #include "03_bvh4/bvh4.h"
 #include "04_sah/build_sah.h"
-#include "testing/brute_force.h"
+#include "04_sah/test_support_ch04.h"
 #include "01_base/ray_sets.h"
 #include "testing/scenes.h"
 
@@ -35,38 +35,6 @@ std::vector<NamedScene> scenes() {
   return s;
 }
 
-/// Traces `rays` through `bvh` with every ISA and counts disagreements with the oracle.
-template <class Bvh>
-void check_against_oracle(const Bvh& bvh, const TriangleMesh& mesh, const std::vector<Ray>& rays) {
-  std::vector<Hit> oracle(rays.size());
-  std::vector<uint8_t> oracle_occluded(rays.size());
-  for (size_t i = 0; i < rays.size(); ++i) {
-    oracle[i] = test::brute_force_intersect(mesh, rays[i]);
-    oracle_occluded[i] = test::brute_force_occluded(mesh, rays[i]) ? 1 : 0;
-  }
-  for (const Isa isa : supported_isas()) {
-    CAPTURE(std::string(isa_name(isa)));
-    std::vector<Hit> hits(rays.size());
-    std::vector<uint8_t> blocked(rays.size());
-    intersect(isa, bvh, rays, hits);
-    occluded(isa, bvh, rays, blocked);
-    int wrong_hits = 0, wrong_occlusion = 0;
-    std::string first;
-    for (size_t i = 0; i < rays.size(); ++i) {
-      const std::string why = test::compare_hits(mesh, rays[i], hits[i], oracle[i]);
-      if (!why.empty() && first.empty()) first = "ray " + std::to_string(i) + ": " + why;
-      wrong_hits += why.empty() ? 0 : 1;
-      // Where the hit agrees within tolerance, occlusion must agree with it.
-      if (why.empty() && blocked[i] != (hits[i].found() ? 1 : 0) &&
-          blocked[i] != oracle_occluded[i])
-        ++wrong_occlusion;
-    }
-    CAPTURE(first);
-    CHECK(wrong_hits == 0);
-    CHECK(wrong_occlusion == 0);
-  }
-}
-
 }  // namespace
 
 TEST_CASE("ch04: BVH2s made from SAH trees agree with brute force on every ISA") {
@@ -77,7 +45,7 @@ TEST_CASE("ch04: BVH2s made from SAH trees agree with brute force on every ISA")
       SahBuildOptions options;
       options.rotations = rotations;
       const BVH2 bvh = make_bvh2(build_binned_sah<2>(refs, options), scene.mesh);
-      check_against_oracle(bvh, scene.mesh, test::mixed_rays(scene.mesh.bounds(), 400, 55));
+      test::check_against_oracle(bvh, scene.mesh, test::mixed_rays(scene.mesh.bounds(), 400, 55));
     }
   }
 }
@@ -94,7 +62,7 @@ TEST_CASE_TEMPLATE(
       SahBuildOptions options;
       options.occluder_order = order;
       const BVHN<N> bvh = make_bvh<N>(build_binned_sah<N>(refs, options), scene.mesh);
-      check_against_oracle(bvh, scene.mesh, test::mixed_rays(scene.mesh.bounds(), 400, 56));
+      test::check_against_oracle(bvh, scene.mesh, test::mixed_rays(scene.mesh.bounds(), 400, 56));
     }
   }
 }

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "04_sah/binning.h"
+#include "04_sah/node_filling.h"
 #include "04_sah/occluder_order.h"
 #include "04_sah/partition.h"
 #include "04_sah/rotations.h"
@@ -183,32 +184,10 @@ class Builder {
   }
   // [ch05-split]
 
-  /// Fills one node as chapter 4 does: split the set, then keep splitting the child whose
-  /// split gains most until the node has N children or no split gains anything.
+  /// Fills one node with chapter 4's skeleton (node_filling.h); a split is split() above.
   int fill_node(Set&& set, std::array<Set, N>& kids, int depth) {
-    const bool median = depth >= kMedianDepth;
-    kids[0] = std::move(set);
-    int k = 1;
-    while (k < N) {
-      int best = -1;
-      for (int i = 0; i < k; ++i) {
-        const bool candidate =
-            median ? kids[i].size() > uint32_t(sah_.max_leaf_size) || k == 1
-                   : kids[i].wants_split || (kids[i].splittable() && kids[i].gain > 0.0);
-        const bool better = best < 0 || (median ? kids[i].size() > kids[best].size()
-                                                : kids[i].gain > kids[best].gain);
-        if (candidate && better) best = i;
-      }
-      if (best < 0) break;
-      auto [left, right] = split(std::move(kids[best]), median);
-      for (int i = k; i > best + 1; --i) kids[i] = std::move(kids[i - 1]);
-      kids[best] = std::move(left);
-      kids[best + 1] = std::move(right);
-      ++k;
-    }
-    if (median)
-      for (int i = 0; i < k; ++i) kids[i].wants_split = kids[i].size() > uint32_t(sah_.max_leaf_size);
-    return k;
+    return sah::fill_node<N>(std::move(set), kids, depth, sah_.max_leaf_size,
+                             [&](Set chosen, bool median) { return split(std::move(chosen), median); });
   }
 
   /// A leaf child over `s`, its references appended to `refs`.
@@ -222,37 +201,19 @@ class Builder {
     return c;
   }
 
-  /// A subtree built by one thread, depth first, then rotated and ordered as in chapter 4.
+  /// A subtree built by one thread, depth first with chapter 4's skeleton, then rotated and
+  /// ordered as in chapter 4.
   Subtree<N> build_subtree(Set&& root, int depth) {
     Subtree<N> out;
     const Box3f root_box = root.bounds;
-    struct Work {
-      Set set;
-      int64_t referrer;  // parent index * N + slot, or -1 for the root
-      int depth;
-    };
-    std::vector<Work> stack;
-    stack.push_back({std::move(root), -1, depth});
-    std::array<Set, N> kids;
-    while (!stack.empty()) {
-      Work work = std::move(stack.back());
-      stack.pop_back();
-      const uint32_t index = uint32_t(out.nodes.size());
-      if (work.referrer >= 0)
-        out.nodes[size_t(work.referrer / N)].children[size_t(work.referrer % N)].index = index;
-      const int k = fill_node(std::move(work.set), kids, work.depth);
-      Node& node = out.nodes.emplace_back();
-      node.num_children = k;
-      for (int i = k - 1; i >= 0; --i) {
-        if (kids[i].wants_split) {
-          node.children[i].box = kids[i].bounds;
-          stack.push_back({std::move(kids[i]), int64_t(index) * N + i, work.depth + 1});
-        } else {
-          node.children[i] = leaf(kids[i], out.refs);
-          kids[i].refs = {};
-        }
-      }
-    }
+    sah::build_depth_first<N>(
+        out.nodes, std::move(root), depth,
+        [&](Set&& set, std::array<Set, N>& kids, int d) { return fill_node(std::move(set), kids, d); },
+        [&](Set& set) {
+          Child c = leaf(set, out.refs);
+          set.refs = {};
+          return c;
+        });
     // Tree rotations
     if (sah_.rotations) {
       const size_t applied = sah::rotate_tree<N>(out.nodes, kRotationRounds);
@@ -276,18 +237,8 @@ class Builder {
 };
 
 void check_options(const SpatialBuildOptions& o) {
-  auto fail = [](const std::string& what) {
-    throw std::invalid_argument("build_spatial_sah: " + what);
-  };
-  const SahBuildOptions& s = o.sah;
-  if (s.bins < 2 || s.bins > kMaxSahBins)
-    fail("bins must be in [2, " + std::to_string(kMaxSahBins) + "], got " + std::to_string(s.bins));
-  if (s.max_leaf_size < 1) fail("max_leaf_size must be at least 1, got " + std::to_string(s.max_leaf_size));
-  if (!std::isfinite(s.traversal_cost) || s.traversal_cost < 0.0f)
-    fail("traversal_cost must be finite and not negative");
-  if (!std::isfinite(s.intersection_cost) || s.intersection_cost <= 0.0f)
-    fail("intersection_cost must be finite and positive");
-  if (s.threads < 0) fail("threads must be 0 (the caller's arena) or positive, got " + std::to_string(s.threads));
+  check_sah_options(o.sah, "build_spatial_sah");
+  auto fail = [](const std::string& what) { throw std::invalid_argument("build_spatial_sah: " + what); };
   if (o.spatial_bins < 2 || o.spatial_bins > kMaxSpatialBins)
     fail("spatial_bins must be in [2, " + std::to_string(kMaxSpatialBins) + "], got " +
          std::to_string(o.spatial_bins));

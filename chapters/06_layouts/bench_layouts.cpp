@@ -1,8 +1,8 @@
-// Chapter 6's benchmark: Mrays/s and bytes per triangle for every layout and intersector,
+// Chapter 6's benchmark: Mrays/s and bytes per triangle for every layout (Möller-Trumbore),
 // through BVH4 and BVH8, for every ISA, on primary and diffuse rays.
 //   ch06_bench --benchmark_filter='sphere_130k/diffuse/bvh4/.*/avx512'
 // Set RTK_SCENES=<shared/scenes> to add real meshes. Names read
-// layouts/<scene>/<rays>/bvh<N>/<layout>.<intersector>/<isa>.
+// layouts/<scene>/<rays>/bvh<N>/<layout>.moeller/<isa> (chapter 7 measures the other tests).
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -36,16 +36,16 @@ const Rays& rays_of(const bench::SceneSource& scene) {
 
 /// One structure per scene, width and configuration, built on first use.
 template <int N>
-const LayoutBVH<N>& bvh_of(const bench::SceneSource& scene, TriangleConfig config) {
+const LayoutBVH<N>& bvh_of(const bench::SceneSource& scene, TriangleLayout layout) {
   static std::map<std::string, std::unique_ptr<LayoutBVH<N>>> cache;
-  auto& slot = cache[scene.name + "/" + config.name()];
-  if (!slot) slot = std::make_unique<LayoutBVH<N>>(build_layout_bvh<N>(bench::scene_mesh(scene), config));
+  auto& slot = cache[scene.name + "/" + std::string(layout_name(layout))];
+  if (!slot) slot = std::make_unique<LayoutBVH<N>>(build_layout_bvh<N>(bench::scene_mesh(scene), layout));
   return *slot;
 }
 
 template <int N>
-void bm_trace(benchmark::State& state, bench::SceneSource scene, TriangleConfig config, Isa isa, bool diffuse) {
-  const LayoutBVH<N>& bvh = bvh_of<N>(scene, config);
+void bm_trace(benchmark::State& state, bench::SceneSource scene, TriangleLayout layout, Isa isa, bool diffuse) {
+  const LayoutBVH<N>& bvh = bvh_of<N>(scene, layout);
   const std::vector<Ray>& rays = diffuse ? rays_of(scene).diffuse : rays_of(scene).primary;
   std::vector<Hit> hits(rays.size());
   for (auto _ : state) {
@@ -64,12 +64,13 @@ const bool registered = [] {
   for (const bench::SceneSource& scene : bench::bench_scenes())
     for (const bool diffuse : {false, true})
       for (const int width : {4, 8})
-        for (const TriangleConfig& config : supported_triangle_configs())
+        for (const TriangleLayout layout : kAllLayouts)
           for (const Isa isa : supported_isas()) {
             const std::string name = "layouts/" + scene.name + (diffuse ? "/diffuse" : "/primary") + "/bvh" +
-                                     std::to_string(width) + "/" + config.name() + "/" + std::string(isa_name(isa));
-            auto* b = width == 4 ? benchmark::RegisterBenchmark(name.c_str(), bm_trace<4>, scene, config, isa, diffuse)
-                                 : benchmark::RegisterBenchmark(name.c_str(), bm_trace<8>, scene, config, isa, diffuse);
+                                     std::to_string(width) + "/" + std::string(layout_name(layout)) + ".moeller/" +
+                                     std::string(isa_name(isa));
+            auto* b = width == 4 ? benchmark::RegisterBenchmark(name.c_str(), bm_trace<4>, scene, layout, isa, diffuse)
+                                 : benchmark::RegisterBenchmark(name.c_str(), bm_trace<8>, scene, layout, isa, diffuse);
             b->Unit(benchmark::kMillisecond)->MinTime(0.3);
           }
   return true;

@@ -17,13 +17,13 @@ SahBuildOptions sah_options_for(TriangleLayout layout) {
 }
 
 template <int N>
-LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleConfig config, int threads) {
-  SahBuildOptions options = sah_options_for(config.layout);
+LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleLayout layout, int threads) {
+  SahBuildOptions options = sah_options_for(layout);
   options.threads = threads;
-  return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, config);
+  return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, layout);
 }
 
-template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleConfig, int);
-template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleConfig, int);
+template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleLayout, int);
+template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleLayout, int);
 
 }  // namespace rtk

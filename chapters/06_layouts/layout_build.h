@@ -17,12 +17,12 @@ namespace rtk {
 SahBuildOptions sah_options_for(TriangleLayout layout);
 // [ch06-sah-options]
 
-/// Builds the tree with sah_options_for(config.layout) (and `threads`, 0 for all), then the
+/// Builds the tree with sah_options_for(layout) (and `threads`, 0 for all), then the
 /// structure. Throws like make_layout_bvh.
 template <int N>
-LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleConfig config, int threads = 0);
+LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleLayout layout, int threads = 0);
 
-extern template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleConfig, int);
-extern template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleConfig, int);
+extern template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleLayout, int);
+extern template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleLayout, int);
 
 }  // namespace rtk

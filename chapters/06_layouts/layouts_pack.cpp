@@ -6,7 +6,7 @@
 #include "06_layouts/triangle_i.h"
 #include "06_layouts/triangle_m.h"
 #include "06_layouts/triangle_v.h"
-#include "07_intersectors/zero_area.h"
+#include "02_bvh2/zero_area.h"
 
 namespace rtk {
 
@@ -43,7 +43,7 @@ void TriangleMLayout<M>::pack(const TriangleMesh& mesh, std::span<const uint32_t
       const uint32_t prim = lane_prim(prims, b, M, lane);
       const Corners c = corners(mesh, prim);
       const Vec3f e1 = c.p[1] - c.p[0], e2 = c.p[2] - c.p[0];
-      // The same float operations as the per-ray computation in 07_intersectors/moeller.h,
+      // The same float operations as the per-ray computation in 02_bvh2/moeller.h,
       // so precomputed and computed-per-ray tests give the same bits.
       const Vec3f ng = cross(e1, e2);
       for (int axis = 0; axis < 3; ++axis) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "06_layouts/layout_build.h"
+#include "07_intersectors/layout_intersectors.h"
 #include "07_intersectors/accuracy_scene.h"
 #include "07_intersectors/intersect_all.h"
 #include "07_intersectors/stability_meshes.h"
@@ -61,11 +62,11 @@ const std::vector<Ray>& accuracy_rays(bool inside) {
 /// One point of the chart: speed and leak rate of one configuration on the same rays.
 void bm_chart(benchmark::State& state, bool inside, TriangleConfig config, Isa isa) {
   static const TriangleMesh mesh = make_accuracy_scene().mesh;
-  const LayoutBVH<4> bvh = build_layout_bvh<4>(mesh, config, 1);
+  const LayoutBVH<4> bvh = build_layout_bvh<4>(mesh, config.layout, 1);
   const std::vector<Ray>& rays = accuracy_rays(inside);
   std::vector<Hit> hits(rays.size());
   for (auto _ : state) {
-    intersect(isa, bvh, rays, hits);
+    intersect(isa, bvh, config.intersector, rays, hits);
     benchmark::DoNotOptimize(hits.data());
   }
   const size_t leaks = count_misses(hits);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "07_intersectors/intersect_all.h"
-#include "07_intersectors/moeller.h"
+#include "02_bvh2/moeller.h"
 #include "07_intersectors/pluecker.h"
 #include "07_intersectors/watertight.h"
 

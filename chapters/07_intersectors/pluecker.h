@@ -8,8 +8,8 @@
 /// made relative to the ray origin, in the arrangement Embree calls the stable Plücker test.
 #pragma once
 
-#include "07_intersectors/vec3v.h"
 #include "01_base/ray.h"
+#include "02_bvh2/moeller.h"  // TriangleHitsK
 
 namespace rtk::RTK_ISA {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "07_intersectors/test_support_ch07.h"
-#include "07_intersectors/zero_area.h"
+#include "02_bvh2/zero_area.h"
 #include "testing/brute_force.h"
 #include "01_base/ray_sets.h"
 #include "testing/scenes.h"

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "07_intersectors/zero_area.h"
+#include "02_bvh2/zero_area.h"
 
 namespace rtk {
 

@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <utility>
 
-#include "07_intersectors/vec3v.h"
 #include "01_base/ray.h"
+#include "02_bvh2/moeller.h"  // TriangleHitsK
 
 namespace rtk::RTK_ISA {
 

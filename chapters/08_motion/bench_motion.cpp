@@ -112,7 +112,7 @@ const LayoutBVH<4>& bvh4_of(const std::string& name) {
   auto& slot = cache[name];
   if (!slot)
     slot = std::make_unique<LayoutBVH<4>>(
-        build_layout_bvh<4>(scene_of(name).scene.t0, {TriangleLayout::triangle4i, IntersectorKind::moeller}));
+        build_layout_bvh<4>(scene_of(name).scene.t0, TriangleLayout::triangle4i));
   return *slot;
 }
 

@@ -11,6 +11,7 @@
 #include "01_base/isa_dispatch.h"
 #include "01_base/ray.h"
 #include "02_bvh2/node_ref.h"
+#include "02_bvh2/trace_kernels.h"
 #include "04_sah/sah_options.h"
 #include "07_intersectors/intersector_kind.h"
 #include "08_motion/motion_mesh.h"
@@ -90,29 +91,24 @@ extern template BVHMB<8> build_bvhmb<8>(MotionMesh, IntersectorKind, const SahBu
 /// The SAH options the motion builder uses by default (chapter 6's for triangle4i).
 SahBuildOptions motion_sah_options();
 
-// The kernels, one set per ISA: closest hits (hits[i] for rays[i]) and occlusion (1 blocked,
-// 0 free) of rays at their own times. Rays that are not motion rays (is_valid_motion_ray)
-// miss. Throw std::invalid_argument for spans of different lengths.
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh4mb(const BVH4MB& bvh, std::span<const Ray> rays, std::span<Hit> hits))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh4mb(const BVH4MB& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded))
-RTK_DECLARE_FOR_EACH_ISA(void intersect_bvh8mb(const BVH8MB& bvh, std::span<const Ray> rays, std::span<Hit> hits))
-RTK_DECLARE_FOR_EACH_ISA(void occluded_bvh8mb(const BVH8MB& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded))
+// [ch08-kernels]
+/// The kernels of each ISA for a BVHMB of width N (4 or 8) whose mesh is stored as `storage` and
+/// whose leaves are tested with `intersector`: closest hits (hits[i] for rays[i]) and occlusion
+/// (1 blocked, 0 free) of rays at their own times; `structure` is the BVHMB<N>. Rays that are
+/// not motion rays (is_valid_motion_ray) miss. The kernels throw std::invalid_argument for
+/// spans of different lengths.
+RTK_DECLARE_FOR_EACH_ISA(template <int N> TraceKernels motion_kernels(MotionStorage storage, IntersectorKind intersector))
 
-/// Closest hits through a BVH4MB with the kernels of `isa`.
-inline void intersect(Isa isa, const BVH4MB& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
-  RTK_PICK_ISA(isa, intersect_bvh4mb)(bvh, rays, hits);
+/// Closest hits through a BVH4MB or BVH8MB with the kernels of `isa`.
+template <int N>
+void intersect(Isa isa, const BVHMB<N>& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
+  RTK_PICK_ISA(isa, motion_kernels<N>)(bvh.mesh.storage, bvh.intersector).intersect(&bvh, rays, hits);
 }
-/// Closest hits through a BVH8MB with the kernels of `isa`.
-inline void intersect(Isa isa, const BVH8MB& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
-  RTK_PICK_ISA(isa, intersect_bvh8mb)(bvh, rays, hits);
+/// Occlusion through a BVH4MB or BVH8MB with the kernels of `isa`.
+template <int N>
+void occluded(Isa isa, const BVHMB<N>& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+  RTK_PICK_ISA(isa, motion_kernels<N>)(bvh.mesh.storage, bvh.intersector).occluded(&bvh, rays, occluded);
 }
-/// Occlusion through a BVH4MB with the kernels of `isa`.
-inline void occluded(Isa isa, const BVH4MB& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
-  RTK_PICK_ISA(isa, occluded_bvh4mb)(bvh, rays, occluded);
-}
-/// Occlusion through a BVH8MB with the kernels of `isa`.
-inline void occluded(Isa isa, const BVH8MB& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
-  RTK_PICK_ISA(isa, occluded_bvh8mb)(bvh, rays, occluded);
-}
+// [ch08-kernels]
 
 }  // namespace rtk

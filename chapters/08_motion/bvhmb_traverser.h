@@ -16,7 +16,10 @@
 #include "01_base/platform.h"
 #include "01_base/simd.h"
 #include "03_bvh4/bvhn_traverser.h"
-#include "06_layouts/leaf_intersectors.h"
+#include "02_bvh2/leaf_intersector.h"
+#include "06_layouts/layout_loads.h"
+#include "07_intersectors/pluecker.h"
+#include "07_intersectors/watertight.h"
 #include "08_motion/bvh4mb.h"
 
 namespace rtk::RTK_ISA {
@@ -100,9 +103,7 @@ struct MotionLeaf {
     for (uint32_t b = 0; b < count; ++b) {
       TriangleHitsK<M> h;
       const vbool<M> valid = test(pre, blocks[b], tfar, h);
-      if (none(valid)) continue;
-      const int lane = nearest_lane(valid, h.t);
-      hit = Hit{h.t[lane], h.u[lane], h.v[lane], blocks[b].prim[lane]};
+      if (none(valid) || !closest_in_block(valid, h, blocks[b], hit)) continue;
       tfar = hit.t;
       found = true;
     }
@@ -175,46 +176,33 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
   return found;
 }
 
-/// Calls `f.template operator()<Leaf>()` with the leaf policy of the structure's storage and
-/// intersector.
-template <int N, class F>
-void with_motion_leaf(const BVHMB<N>& bvh, F&& f) {
-  auto with_storage = [&]<class I>() {
-    if (bvh.mesh.storage == MotionStorage::sparse) return f.template operator()<MotionLeaf<MotionStorage::sparse, I>>();
-    return f.template operator()<MotionLeaf<MotionStorage::dense, I>>();
-  };
-  switch (bvh.intersector) {
-    case IntersectorKind::moeller: return with_storage.template operator()<MoellerTrumbore>();
-    case IntersectorKind::pluecker: return with_storage.template operator()<PlueckerStable>();
-    case IntersectorKind::watertight: return with_storage.template operator()<Watertight>();
-  }
-  throw std::invalid_argument("unknown intersector");
-}
-
-/// Closest hits of rays[i] into hits[i]; rays that are not motion rays miss.
-template <int N>
-void intersect_mb(const BVHMB<N>& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
+/// Closest hits of rays[i] into hits[i] through the BVHMB<N> `structure`; rays that are not
+/// motion rays miss.
+template <int N, class Leaf>
+void intersect_mb(const void* structure, std::span<const Ray> rays, std::span<Hit> hits) {
   require_same_size(rays.size(), hits.size());
-  require_layout(bvh.leaves, Triangle4iLayout::kName);
-  with_motion_leaf(bvh, [&]<class Leaf>() {
-    for (size_t i = 0; i < rays.size(); ++i) {
-      Hit hit;
-      if (is_valid_motion_ray(rays[i])) traverse_bvhmb<N, Leaf, false>(bvh, rays[i], hit);
-      hits[i] = hit;
-    }
-  });
+  const BVHMB<N>& bvh = *static_cast<const BVHMB<N>*>(structure);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    Hit hit;
+    if (is_valid_motion_ray(rays[i])) traverse_bvhmb<N, Leaf, false>(bvh, rays[i], hit);
+    hits[i] = hit;
+  }
 }
 
 /// Occlusion of rays[i] into occluded[i]; rays that are not motion rays are not occluded.
-template <int N>
-void occluded_mb(const BVHMB<N>& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+template <int N, class Leaf>
+void occluded_mb(const void* structure, std::span<const Ray> rays, std::span<uint8_t> occluded) {
   require_same_size(rays.size(), occluded.size());
-  require_layout(bvh.leaves, Triangle4iLayout::kName);
-  with_motion_leaf(bvh, [&]<class Leaf>() {
-    Hit unused;
-    for (size_t i = 0; i < rays.size(); ++i)
-      occluded[i] = is_valid_motion_ray(rays[i]) && traverse_bvhmb<N, Leaf, true>(bvh, rays[i], unused) ? 1 : 0;
-  });
+  const BVHMB<N>& bvh = *static_cast<const BVHMB<N>*>(structure);
+  Hit unused;
+  for (size_t i = 0; i < rays.size(); ++i)
+    occluded[i] = is_valid_motion_ray(rays[i]) && traverse_bvhmb<N, Leaf, true>(bvh, rays[i], unused) ? 1 : 0;
+}
+
+/// The batch kernels of a BVHMB<N> whose leaves Leaf reads.
+template <int N, class Leaf>
+constexpr TraceKernels motion_batch_kernels() {
+  return {&intersect_mb<N, Leaf>, &occluded_mb<N, Leaf>};
 }
 
 }  // namespace rtk::RTK_ISA

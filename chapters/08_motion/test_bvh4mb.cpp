@@ -10,6 +10,7 @@
 
 #include "06_layouts/layout_build.h"
 #include "06_layouts/triangle_i.h"
+#include "07_intersectors/layout_intersectors.h"
 #include "08_motion/bvh4mb.h"
 #include "test_support_ch08.h"
 
@@ -136,11 +137,11 @@ TEST_CASE("ch08: a static scene through BVH4MB gives the hits of BVH4 with trian
   for (const IntersectorKind kind : kAllIntersectors) {
     CAPTURE(intersector_name(kind));
     const BVH4MB mb = build_bvhmb<4>(mesh, kind);
-    const LayoutBVH<4> bvh4 = build_layout_bvh<4>(scene.t0, {TriangleLayout::triangle4i, kind});
+    const LayoutBVH<4> bvh4 = build_layout_bvh<4>(scene.t0, TriangleLayout::triangle4i);
     for (const Isa isa : supported_isas()) {
       CAPTURE(isa_name(isa));
       std::vector<Hit> expected(rays.size());
-      intersect(isa, bvh4, rays, expected);
+      intersect(isa, bvh4, kind, rays, expected);
       const std::vector<Hit> hits = trace(isa, mb, rays);
       // The same triangles, computed the same way, in the same tree: the same bits. (The time
       // plays no part: a static vertex is p0 + t * 0 = p0 exactly.)

@@ -11,7 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "01_base/timer.h"
-#include "06_layouts/triangle_config.h"
+#include "07_intersectors/triangle_config.h"
 #include "09_kernel_api/backends.h"
 
 namespace rtk {
@@ -27,7 +27,7 @@ constexpr int kMaxThreads = 1024;
 constexpr size_t kRaysPerTask = 1024;
 
 std::string accel_name(const BackendEntry& e) { return std::string(e.base) + "." + std::string(e.split); }
-std::string tri_name(const BackendEntry& e) { return std::string(e.layout) + "." + std::string(e.intersector); }
+std::string tri_name(const BackendEntry& e) { return e.tri.name(); }
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -102,7 +102,7 @@ const BackendEntry& resolve(const AccelConfig& config, Isa isa, size_t triangles
   // more than the scene needs).
   auto row_for = [&](const TriangleConfig& c) -> const BackendEntry* {
     for (const BackendEntry* e : rows)
-      if (e->layout == layout_name(c.layout) && e->intersector == intersector_name(c.intersector)) return e;
+      if (e->tri == c) return e;
     return nullptr;
   };
   auto say = [&](const std::string& why) {
@@ -110,14 +110,15 @@ const BackendEntry& resolve(const AccelConfig& config, Isa isa, size_t triangles
   };
   if (config.tri.empty()) {
     const size_t budget = memory_budget(config);
-    const TriangleLayout fastest = choose_default_layout(0, isa);
-    const TriangleLayout chosen = choose_default_layout(triangles, isa, budget);
+    const int width = base == "bvh8" ? 8 : 4;
+    const TriangleLayout fastest = choose_default_layout(0, isa, width);
+    const TriangleLayout chosen = choose_default_layout(triangles, isa, width, budget);
     if (const BackendEntry* e = row_for({chosen, IntersectorKind::moeller})) {
       say(chosen == fastest ? "default: " + std::string(layout_name(chosen)) + ", the fastest blocks for " +
                                   std::string(isa_name(isa))
                             : "default: " + std::string(layout_name(chosen)) + ", the leanest layout: " +
                                   std::string(layout_name(fastest)) + " would need about " +
-                                  std::to_string(size_t(estimated_bytes_per_triangle(fastest) * double(triangles)) >> 20) +
+                                  std::to_string(size_t(estimated_bytes_per_triangle(fastest, width) * double(triangles)) >> 20) +
                                   " MiB of the " + std::to_string(budget >> 20) + " MiB budget");
       return *e;
     }
@@ -211,27 +212,32 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
         throw std::invalid_argument("the scene has a triangle whose vertex index is out of range");
   info_.triangles = mesh.size();
   Timer timer;
-  backend_ = entry.build(mesh, info_.isa, config.threads);
+  api::BuiltStructure built = entry.build(mesh, info_.isa, config.threads, entry.tri);
   info_.build_seconds = timer.seconds();
-  info_.bytes = backend_->bytes();
+  info_.bytes = built.bytes;
+  structure_ = std::move(built.owner);
+  traced_ = built.traced;
+  kernels_ = built.kernels;
 }
 
 Accel::~Accel() = default;
 Accel::Accel(Accel&&) noexcept = default;
 Accel& Accel::operator=(Accel&&) noexcept = default;
 
+// [ch09-intersect]
 void Accel::intersect(std::span<const Ray> rays, std::span<Hit> hits) const {
   if (rays.size() != hits.size()) throw std::invalid_argument("intersect: rays and hits differ in length");
   run_parallel(rays.size(), info_.threads, [&](size_t begin, size_t end) {
-    backend_->intersect(rays.subspan(begin, end - begin), hits.subspan(begin, end - begin));
+    kernels_.intersect(traced_, rays.subspan(begin, end - begin), hits.subspan(begin, end - begin));
   });
 }
 
 void Accel::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
   if (rays.size() != occluded.size()) throw std::invalid_argument("occluded: rays and answers differ in length");
   run_parallel(rays.size(), info_.threads, [&](size_t begin, size_t end) {
-    backend_->occluded(rays.subspan(begin, end - begin), occluded.subspan(begin, end - begin));
+    kernels_.occluded(traced_, rays.subspan(begin, end - begin), occluded.subspan(begin, end - begin));
   });
 }
+// [ch09-intersect]
 
 }  // namespace rtk

@@ -30,6 +30,7 @@
 #include "01_base/cpu_features.h"
 #include "01_base/ray.h"
 #include "01_base/triangle_mesh.h"
+#include "02_bvh2/trace_kernels.h"
 
 namespace rtk {
 
@@ -56,17 +57,25 @@ struct AccelInfo {
   double build_seconds = 0;  ///< wall-clock time of the build
 };
 
-/// One variant's built structure and kernels; Accel holds one.
-class AccelBackend {
- public:
-  virtual ~AccelBackend() = default;
-  /// Closest hits of rays[i] into hits[i], on the calling thread.
-  virtual void intersect(std::span<const Ray> rays, std::span<Hit> hits) const = 0;
-  /// Occlusion of rays[i] into occluded[i] (1 blocked, 0 free), on the calling thread.
-  virtual void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const = 0;
-  /// Memory held by the structure, in bytes.
-  virtual size_t bytes() const = 0;
+// [ch09-tracer]
+/// A built structure bound to the two kernels its configuration resolved to: what a batch of
+/// rays needs to reach its traversal loop through one indirect call. It is a view: the Accel
+/// (or whatever else built the structure) must outlive it. A renderer holds one and calls it
+/// from many threads at once, each call on the calling thread.
+struct Tracer {
+  const void* structure = nullptr;  ///< what the kernels read, of the type they were made for
+  TraceKernels kernels;             ///< the resolved kernels
+
+  /// The closest hit of every ray: hits[i] for rays[i]; a miss for invalid rays.
+  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const {
+    kernels.intersect(structure, rays, hits);
+  }
+  /// Whether each ray is blocked in [tnear, tfar]: occluded[i] = 1 or 0.
+  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
+    kernels.occluded(structure, rays, occluded);
+  }
 };
+// [ch09-tracer]
 
 /// An acceleration structure over a triangle mesh, ready to trace. It keeps what it needs
 /// (the mesh may be destroyed after construction); tracing is const and may be called from
@@ -78,7 +87,7 @@ class Accel {
   Accel(const TriangleMesh& mesh, const AccelConfig& config = {});
   /// Builds a structure for a scene in linear motion: `t0` holds the vertices at shutter time 0,
   /// `t1` the same triangles with the vertices at time 1, and each ray's time picks the moment.
-  /// Chooses bvh4mb (chapter 8) unless nothing moves; see api/motion_accel.h for the rules.
+  /// Chooses bvh4mb (chapter 8) unless nothing moves; see 09_kernel_api/motion_accel.h for the rules.
   Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& config = {});
   ~Accel();
   Accel(Accel&&) noexcept;
@@ -94,9 +103,15 @@ class Accel {
   /// The configuration that was built, its size and its build time.
   const AccelInfo& info() const { return info_; }
 
+  /// The structure with its kernels, for a caller that makes its own batches and threads (the
+  /// renderer): every call traces on the calling thread. Valid while this Accel lives.
+  Tracer tracer() const { return {traced_, kernels_}; }
+
  private:
   AccelInfo info_;
-  std::unique_ptr<AccelBackend> backend_;
+  std::shared_ptr<const void> structure_;  ///< the built structure, whatever its type
+  const void* traced_ = nullptr;           ///< what the kernels read: the structure or a part of it
+  TraceKernels kernels_;                   ///< resolved once, when the structure was built
 };
 
 /// The accepted `-accel` strings, full names (e.g. "bvh4.objectsplit").

@@ -1,61 +1,46 @@
 /// \file
-/// The table behind the public API: one entry per configuration the chapters implement, each
-/// with the function that builds it for an ISA. Adding a kernel to the API is adding a row.
+/// The table behind the public API: one row per configuration the chapters implement, each with
+/// the function that builds it for an ISA and binds it to its kernels. Adding a structure to the
+/// API is adding rows.
 #pragma once
 
+#include <cstddef>
 #include <memory>
-#include <span>
 #include <string_view>
-#include <utility>
 #include <vector>
 
+#include "07_intersectors/triangle_config.h"
 #include "09_kernel_api/accel.h"
 
 namespace rtk::api {
 
-/// A built BVH of any kind and the ISA whose kernels trace it: the structure's own
-/// `intersect(isa, bvh, ...)` and `occluded(isa, bvh, ...)`, found for `Bvh`'s type. The
-/// chapters' kernels already make invalid rays miss and check the leaf layout; this class only
-/// binds the choices.
-namespace detail {
-// Unqualified calls: argument-dependent lookup finds, where BvhBackend<Bvh> is instantiated,
-// the `intersect` and `occluded` that the chapter of `Bvh` declares next to it.
-template <class Bvh>
-void trace(Isa isa, const Bvh& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
-  intersect(isa, bvh, rays, hits);
-}
-template <class Bvh>
-void trace(Isa isa, const Bvh& bvh, std::span<const Ray> rays, std::span<uint8_t> blocked) {
-  occluded(isa, bvh, rays, blocked);
-}
-}  // namespace detail
-
-template <class Bvh>
-class BvhBackend final : public AccelBackend {
- public:
-  BvhBackend(Bvh bvh, Isa isa) : bvh_(std::move(bvh)), isa_(isa) {}
-  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const override {
-    detail::trace(isa_, bvh_, rays, hits);
-  }
-  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const override {
-    detail::trace(isa_, bvh_, rays, occluded);
-  }
-  size_t bytes() const override { return bvh_.bytes(); }
-
- private:
-  Bvh bvh_;
-  Isa isa_;
+// [ch09-built]
+/// A built structure and the kernels resolved for it: the owner of the structure (of whatever
+/// type), the part the kernels read, the two kernels, and the memory it holds.
+struct BuiltStructure {
+  std::shared_ptr<const void> owner;
+  const void* traced = nullptr;
+  TraceKernels kernels;
+  size_t bytes = 0;
 };
 
-/// Builds one configuration's structure for an ISA with at most `threads` threads.
-using BuildFunction = std::unique_ptr<AccelBackend> (*)(const TriangleMesh& mesh, Isa isa, int threads);
+/// Moves a built structure into shared ownership and binds it to `kernels`. `traced` picks the
+/// part the kernels read (the structure itself, or its node tree for chapter 6's LayoutBVH).
+template <class Structure, class Traced>
+BuiltStructure bind(Structure structure, TraceKernels kernels, Traced traced) {
+  auto owner = std::make_shared<const Structure>(std::move(structure));
+  return {owner, traced(*owner), kernels, owner->bytes()};
+}
+// [ch09-built]
 
-/// One configuration: `accel` = base + "." + split, `tri` = layout + "." + intersector.
+/// Builds one configuration's structure for an ISA with at most `threads` threads.
+using BuildFunction = BuiltStructure (*)(const TriangleMesh& mesh, Isa isa, int threads, TriangleConfig tri);
+
+/// One configuration: `accel` = base + "." + split, `tri` = the layout and its intersector.
 struct BackendEntry {
-  std::string_view base;         ///< "bvh2", "bvh4", "bvh8"
-  std::string_view split;        ///< "objectsplit" or "spatialsplit"
-  std::string_view layout;       ///< "triangle1", "triangle4", ...
-  std::string_view intersector;  ///< "moeller" or "pluecker"
+  std::string_view base;   ///< "bvh2", "bvh4", "bvh8"
+  std::string_view split;  ///< "objectsplit" or "spatialsplit"
+  TriangleConfig tri;      ///< e.g. triangle4.moeller
   BuildFunction build;
 };
 

@@ -4,7 +4,8 @@
 #include <string>
 
 #include "01_base/timer.h"
-#include "06_layouts/triangle_config.h"
+#include "01_base/isa_dispatch.h"
+#include "07_intersectors/triangle_config.h"
 #include "08_motion/bvh4mb.h"
 #include "09_kernel_api/backends.h"
 
@@ -31,12 +32,12 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   if (t0.vertices.size() >= kInvalidPrim || t0.triangles.size() >= kInvalidPrim)
     throw std::invalid_argument("the scene has more than 2^32 - 2 triangles or vertices");
   MotionMesh mesh = make_motion_mesh(t0, t1, MotionStorage::sparse);
-  // [api-motion-storage]
+  // [ch09-motion-storage]
   // Model no more than the scene needs: sparse storage costs 16 bytes per vertex plus 12 per
   // moving one, dense storage 24 per vertex, so dense is smaller (and a little faster) once two
   // vertices in three move.
   if (3 * mesh.moving > 2 * t0.vertices.size()) mesh = make_motion_mesh(t0, t1, MotionStorage::dense);
-  // [api-motion-storage]
+  // [ch09-motion-storage]
   const char* storage = mesh.storage == MotionStorage::dense ? "dense motion" : "sparse motion";
 
   // Step 2: which structure. A static scene builds no motion structure unless asked to.
@@ -79,9 +80,14 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   SahBuildOptions options = motion_sah_options();
   options.threads = resolved.threads;
   Timer timer;
-  backend_ = std::make_unique<api::BvhBackend<BVH4MB>>(build_bvhmb<4>(std::move(mesh), tri.intersector, &options), resolved.isa);
+  BVH4MB bvh = build_bvhmb<4>(std::move(mesh), tri.intersector, &options);
+  const TraceKernels kernels = RTK_PICK_ISA(resolved.isa, motion_kernels<4>)(bvh.mesh.storage, bvh.intersector);
+  api::BuiltStructure built = api::bind(std::move(bvh), kernels, [](const BVH4MB& b) { return &b; });
   info_.build_seconds = timer.seconds();
-  info_.bytes = backend_->bytes();
+  info_.bytes = built.bytes;
+  structure_ = std::move(built.owner);
+  traced_ = built.traced;
+  kernels_ = built.kernels;
 }
 
 }  // namespace rtk

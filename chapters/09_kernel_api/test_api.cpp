@@ -4,12 +4,14 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <bit>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "06_layouts/triangle_config.h"
+#include "07_intersectors/triangle_config.h"
 #include "09_kernel_api/accel.h"
 #include "testing/brute_force.h"
 #include "01_base/ray_sets.h"
@@ -31,11 +33,9 @@ std::string refusal(const AccelConfig& config) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-}  // namespace
-
-TEST_CASE("api: every accepted configuration agrees with brute force on every ISA") {
-  // A closed sphere, a soup with zero-area triangles and a few long diagonal triangles (which
-  // the spatial splits cut), in one scene.
+/// A closed sphere, a soup with zero-area triangles and a few long diagonal triangles (which
+/// the spatial splits cut), in one scene.
+TriangleMesh mixed_scene() {
   TriangleMesh mesh = test::make_sphere(10, 20, {0.5f, 0.5f, 0.5f}, 0.3f);
   const TriangleMesh soup = test::make_random_soup(300, 601);
   const TriangleMesh slivers = test::make_slivers(40, 602);
@@ -45,6 +45,19 @@ TEST_CASE("api: every accepted configuration agrees with brute force on every IS
     for (auto t : part->triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
   }
   test::add_degenerate_triangles(mesh, 20, 603);
+  return mesh;
+}
+
+bool same_bits(const Hit& a, const Hit& b) {
+  return std::bit_cast<uint32_t>(a.t) == std::bit_cast<uint32_t>(b.t) &&
+         std::bit_cast<uint32_t>(a.u) == std::bit_cast<uint32_t>(b.u) &&
+         std::bit_cast<uint32_t>(a.v) == std::bit_cast<uint32_t>(b.v) && a.prim == b.prim;
+}
+
+}  // namespace
+
+TEST_CASE("ch09: every accepted configuration agrees with brute force on every ISA") {
+  const TriangleMesh mesh = mixed_scene();
   const std::vector<Ray> rays = test::mixed_rays(mesh.bounds(), 200, 604);
   std::vector<Hit> oracle(rays.size());
   std::vector<uint8_t> oracle_occluded(rays.size());
@@ -88,7 +101,48 @@ TEST_CASE("api: every accepted configuration agrees with brute force on every IS
   CHECK(configs == 2 + 4 * 15);
 }
 
-TEST_CASE("api: the table offers every configuration chapter 6 supports, with both split strategies") {
+// [ch09-test-one-answer]
+TEST_CASE("ch09: for one intersector, every structure, layout and ISA gives the same bits") {
+  // The hits and occlusion of the first configuration of each intersector, then every other
+  // configuration with that intersector (bvh2/bvh4/bvh8, object and spatial splits, every
+  // layout that has it) on every ISA, compared bit for bit: t, u, v, primID and occlusion.
+  const TriangleMesh mesh = mixed_scene();
+  std::vector<Ray> rays = test::mixed_rays(mesh.bounds(), 400, 605);
+  const std::vector<Ray> inside = test::random_rays(mesh.bounds(), 400, 606);
+  rays.insert(rays.end(), inside.begin(), inside.end());
+  struct Answer {
+    std::string config;
+    std::vector<Hit> hits;
+    std::vector<uint8_t> blocked;
+  };
+  std::map<IntersectorKind, Answer> first;
+  int compared = 0;
+  for (const std::string& accel : supported_accels())
+    for (const std::string& tri : supported_tris(accel))
+      for (const Isa isa : supported_isas()) {
+        AccelConfig config;
+        config.accel = accel, config.tri = tri, config.isa = isa;
+        const Accel structure(mesh, config);
+        Answer answer{accel + " " + tri + " " + std::string(isa_name(isa)), std::vector<Hit>(rays.size()),
+                      std::vector<uint8_t>(rays.size())};
+        structure.intersect(rays, answer.hits);
+        structure.occluded(rays, answer.blocked);
+        const auto [it, is_first] = first.try_emplace(parse_triangle_config(tri).intersector, answer);
+        if (is_first) continue;
+        CAPTURE(answer.config);
+        CAPTURE(it->second.config);
+        int differ = 0;
+        for (size_t i = 0; i < rays.size(); ++i)
+          differ += !same_bits(answer.hits[i], it->second.hits[i]) || answer.blocked[i] != it->second.blocked[i];
+        CHECK(differ == 0);
+        ++compared;
+      }
+  CHECK(first.size() == 3);
+  CHECK(compared > 0);
+}
+// [ch09-test-one-answer]
+
+TEST_CASE("ch09: the table offers every configuration chapter 6 supports, with both split strategies") {
   std::set<std::string> chapter6;
   for (const TriangleConfig& c : supported_triangle_configs()) chapter6.insert(c.name());
   for (const std::string base : {"bvh4", "bvh8"})
@@ -104,7 +158,7 @@ TEST_CASE("api: the table offers every configuration chapter 6 supports, with bo
     CHECK(std::count(accels.begin(), accels.end(), name) == 1);
 }
 
-TEST_CASE("api: .fast and .accurate resolve per layout, and bare names take the defaults") {
+TEST_CASE("ch09: .fast and .accurate resolve per layout, and bare names take the defaults") {
   auto tri_of = [](const std::string& accel, const std::string& tri) {
     AccelConfig c;
     c.accel = accel, c.tri = tri;
@@ -124,14 +178,15 @@ TEST_CASE("api: .fast and .accurate resolve per layout, and bare names take the 
   CHECK(resolve_config(c).accel == "bvh4.spatialsplit");
 }
 
-TEST_CASE("api: the default layout follows chapter 6's rule and says why") {
+TEST_CASE("ch09: the default layout follows chapter 6's rule and says why") {
   for (const Isa isa : supported_isas()) {
     CAPTURE(std::string(isa_name(isa)));
     AccelConfig config;
     config.isa = isa;
     const AccelInfo info = resolve_config(config);
     CHECK(info.accel == (isa == Isa::avx2 || isa == Isa::avx512 ? "bvh8.objectsplit" : "bvh4.objectsplit"));
-    CHECK(info.tri == std::string(layout_name(choose_default_layout(0, isa))) + ".moeller");
+    const int width = isa == Isa::avx2 || isa == Isa::avx512 ? 8 : 4;
+    CHECK(info.tri == std::string(layout_name(choose_default_layout(0, isa, width))) + ".moeller");
     CHECK(contains(info.choice, "default"));
     // A scene too large for the memory budget gets the leanest layout.
     const TriangleMesh mesh = test::make_sphere(20, 40);
@@ -145,7 +200,7 @@ TEST_CASE("api: the default layout follows chapter 6's rule and says why") {
   }
 }
 
-TEST_CASE("api: unsupported configurations are refused with the supported list") {
+TEST_CASE("ch09: unsupported configurations are refused with the supported list") {
   AccelConfig c;
   c.accel = "bvh3";
   std::string why = refusal(c);

@@ -54,7 +54,7 @@ std::string refusal(const TriangleMesh& t0, const TriangleMesh& t1, const AccelC
 
 }  // namespace
 
-TEST_CASE("api: Accel(t0, t1) builds bvh4mb for a moving scene and traces at each ray's time") {
+TEST_CASE("ch09: Accel(t0, t1) builds bvh4mb for a moving scene and traces at each ray's time") {
   const Pair pair;
   std::vector<Ray> rays = test::random_rays(merge(pair.t0.bounds(), pair.t1.bounds()), 300, 4);
   for (size_t i = 0; i < rays.size(); ++i) rays[i].time = float(i % 11) / 10.0f;
@@ -82,7 +82,7 @@ TEST_CASE("api: Accel(t0, t1) builds bvh4mb for a moving scene and traces at eac
     }
 }
 
-TEST_CASE("api: a static pair builds the static default; bvh4mb is refused without a second mesh") {
+TEST_CASE("ch09: a static pair builds the static default; bvh4mb is refused without a second mesh") {
   const Pair pair;
   const Accel still(pair.t0, pair.t0);
   const AccelInfo plain = resolve_config({});
@@ -114,7 +114,7 @@ TEST_CASE("api: a static pair builds the static default; bvh4mb is refused witho
                        std::invalid_argument);
 }
 
-TEST_CASE("api: motion is stored sparsely unless most vertices move") {
+TEST_CASE("ch09: motion is stored sparsely unless most vertices move") {
   // Sparse storage costs 16 bytes per vertex plus 12 per moving one, dense 24 per vertex: the
   // API keeps sparse motion while fewer than two vertices in three move (chapter 8).
   const Pair all_move;

@@ -1,6 +1,5 @@
 #include "13_pathtracer/accel_kernels.h"
 
-#include <algorithm>
 #include <cstdio>
 
 namespace rtk {
@@ -15,29 +14,10 @@ Accel build(const RenderScene& scene, const AccelConfig& config) {
   return Accel(scene.mesh, t1, config);
 }
 
-// The renderer's batches are one tile's rays; rtk::Accel would spread a batch above its task
-// size over its own threads, inside a tile task that already runs on one of them. Calls are
-// cut to this size so that every batch is traced on the calling thread.
-constexpr size_t kMaxBatch = 1024;
-
 }  // namespace
 
 AccelKernels::AccelKernels(const RenderScene& scene, const AccelConfig& config)
     : accel_(build(scene, config)) {}
-
-void AccelKernels::intersect(std::span<const Ray> rays, std::span<Hit> hits) const {
-  for (size_t i = 0; i < rays.size(); i += kMaxBatch) {
-    const size_t n = std::min(kMaxBatch, rays.size() - i);
-    accel_.intersect(rays.subspan(i, n), hits.subspan(i, n));
-  }
-}
-
-void AccelKernels::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
-  for (size_t i = 0; i < rays.size(); i += kMaxBatch) {
-    const size_t n = std::min(kMaxBatch, rays.size() - i);
-    accel_.occluded(rays.subspan(i, n), occluded.subspan(i, n));
-  }
-}
 
 std::string AccelKernels::name() const {
   const AccelInfo& i = accel_.info();

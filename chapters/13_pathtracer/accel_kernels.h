@@ -1,17 +1,16 @@
 /// \file
-/// The renderer's ray kernels on RTK's own acceleration structures: chapter 13's RayKernels
-/// implemented by rtk::Accel (lib/api), built for exactly what the scene needs: a static
-/// structure for a static scene, the motion structure (chapter 8) only when vertices move.
+/// The renderer's ray kernels on RTK's own acceleration structures: RayKernels implemented by
+/// chapter 9's rtk::Accel, built for exactly what the scene needs: a static structure for a
+/// static scene, the motion structure (chapter 8) only when vertices move.
 #pragma once
 
 #include <functional>
 #include <memory>
-#include <span>
 #include <string>
 
+#include "09_kernel_api/accel.h"
 #include "13_pathtracer/ray_kernels.h"
 #include "13_pathtracer/scene.h"
-#include "09_kernel_api/accel.h"
 
 namespace rtk {
 
@@ -23,8 +22,7 @@ class AccelKernels final : public RayKernels {
   /// Throws std::invalid_argument like rtk::Accel for a configuration RTK does not have.
   AccelKernels(const RenderScene& scene, const AccelConfig& config);
 
-  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const override;
-  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const override;
+  Tracer tracer() const override { return accel_.tracer(); }
   /// "rtk ACCEL TRI ISA", e.g. "rtk bvh8.objectsplit triangle4v.pluecker avx2".
   std::string name() const override;
 

@@ -54,7 +54,7 @@ struct PathTracer::Batch {
 PathTracer::PathTracer(const RenderScene& scene, const RayKernels& kernels,
                        const RenderOptions& options)
     : scene_(scene),
-      kernels_(kernels),
+      kernels_(kernels.tracer()),
       options_(options),
       camera_(with_aspect(scene.camera, options)),
       filter_(options.filter, options.filter_radius) {

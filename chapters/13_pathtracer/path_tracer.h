@@ -54,7 +54,7 @@ class PathTracer {
   Color escaped(const Path& path, Vec3f dir) const;
 
   const RenderScene& scene_;
-  const RayKernels& kernels_;
+  Tracer kernels_;  ///< the scene's structure and kernels (RayKernels::tracer)
   RenderOptions options_;
   Camera camera_;
   PixelFilter filter_;

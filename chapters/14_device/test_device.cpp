@@ -216,7 +216,7 @@ TEST_CASE("ch14: a device builds its scenes' kernels with the factory it was giv
   rays[0].org = {0, 2, 0};  // below the quad light at y = 2.5
   rays[0].dir = {0, -1, 0};
   std::vector<rtk::Hit> hits(1);
-  held->intersect(rays, hits);
+  held->tracer().intersect(rays, hits);
   CHECK(hits[0].found());
   CHECK(hits[0].t == doctest::Approx(1.0f));  // the blocker at y = 1
 }

@@ -96,7 +96,7 @@ Ray OrbitCamera::ray_through(Vec2f film, float aspect) const {
 std::optional<Vec3f> OrbitCamera::pick(const RayKernels& kernels, Vec2f film, float aspect) const {
   const Ray ray = ray_through(film, aspect);
   Hit hit;
-  kernels.intersect(std::span<const Ray>(&ray, 1), std::span<Hit>(&hit, 1));
+  kernels.tracer().intersect(std::span<const Ray>(&ray, 1), std::span<Hit>(&hit, 1));
   if (!hit.found()) return std::nullopt;
   return ray.org + ray.dir * hit.t;
 }

@@ -17,10 +17,16 @@ const TriangleMesh& static_mesh(const RenderScene& scene) {
 
 EmbreeKernels::EmbreeKernels(const RenderScene& scene, int threads) : scene_(static_mesh(scene), threads) {}
 
-void EmbreeKernels::intersect(std::span<const Ray> rays, std::span<Hit> hits) const { scene_.intersect(rays, hits); }
-
-void EmbreeKernels::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
-  scene_.occluded(rays, occluded);
+Tracer EmbreeKernels::tracer() const {
+  // The same form as RTK's kernels: plain functions of (structure, rays, results).
+  const TraceKernels kernels{
+      [](const void* s, std::span<const Ray> rays, std::span<Hit> hits) {
+        static_cast<const EmbreeScene*>(s)->intersect(rays, hits);
+      },
+      [](const void* s, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+        static_cast<const EmbreeScene*>(s)->occluded(rays, occluded);
+      }};
+  return {&scene_, kernels};
 }
 
 std::string EmbreeKernels::name() const {

@@ -22,8 +22,8 @@ class EmbreeKernels final : public RayKernels {
   /// that names the option (-kernels) rather than rendered without its blur.
   EmbreeKernels(const RenderScene& scene, int threads);
 
-  void intersect(std::span<const Ray> rays, std::span<Hit> hits) const override;
-  void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const override;
+  /// Embree's scene, and two kernels that call rtcIntersect1 / rtcOccluded1 for each ray.
+  Tracer tracer() const override;
   /// "embree 3.13.5 (rtcIntersect1, medium-quality build)".
   std::string name() const override;
 

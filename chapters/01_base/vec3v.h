@@ -1,6 +1,6 @@
 /// \file
-/// K points or directions in structure-of-arrays form: what an intersector reads for K
-/// triangles at once. Per-ISA template (include from kernel sources only).
+/// K points or directions in structure-of-arrays form: what a ray/triangle test reads for K
+/// triangles at once (chapter 2 onwards). Per-ISA template (include from kernel sources only).
 #pragma once
 
 #ifndef RTK_ISA
@@ -44,12 +44,5 @@ template <int K> RTK_INLINE vfloat<K> dot(const Vec3v<K>& a, const Vec3v<K>& b) 
 template <int K> RTK_INLINE Vec3v<K> cross(const Vec3v<K>& a, const Vec3v<K>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-
-/// What an intersector finds for K triangles: per lane the distance and the barycentric weights
-/// u and v of the triangle's second and third vertex. Only lanes of the returned mask count.
-template <int K>
-struct TriangleHitsK {
-  vfloat<K> t, u, v;
-};
 
 }  // namespace rtk::RTK_ISA

@@ -1,4 +1,4 @@
-#include "07_intersectors/zero_area.h"
+#include "02_bvh2/zero_area.h"
 
 #include <cmath>
 

@@ -1,15 +1,25 @@
 /// \file
-/// The Möller-Trumbore ray/triangle test for one ray against K triangles.
+/// The Möller-Trumbore ray/triangle test for one ray against K triangles: RTK's one
+/// implementation of it, which every leaf layout and every structure uses.
 ///
 /// Möller and Trumbore, "Fast, minimum storage ray/triangle intersection", Journal of
-/// Graphics Tools 2(1), 1997. The fastest of the three tests in this chapter, and the one that
-/// leaks: see chapter.md, "Why Möller-Trumbore leaks".
+/// Graphics Tools 2(1), 1997. The fastest of the book's three tests, and the one that leaks
+/// between long thin triangles: chapter 7 shows why, and adds the two that do not.
+/// Per-ISA template: include from kernel sources only.
 #pragma once
 
-#include "07_intersectors/vec3v.h"
 #include "01_base/ray.h"
+#include "01_base/vec3v.h"
 
 namespace rtk::RTK_ISA {
+
+/// What a ray/triangle test finds for K triangles: per lane the distance and the barycentric
+/// weights u and v of the triangle's second and third vertex. Only lanes of the returned mask
+/// count.
+template <int K>
+struct TriangleHitsK {
+  vfloat<K> t, u, v;
+};
 
 /// The Möller-Trumbore test in the form that reads a precomputed triangle: its first vertex v0,
 /// its edges e1 = v1 - v0 and e2 = v2 - v0, and its geometric normal Ng = e1 x e2.
@@ -22,7 +32,7 @@ struct MoellerTrumbore {
     explicit Precalc(const Ray& ray) : org(ray.org), dir(ray.dir), tnear(ray.tnear) {}
   };
 
-  // [ch07-moeller]
+  // [ch02-moeller]
   /// Tests K precomputed triangles; a lane hits when the ray crosses its triangle (either side)
   /// at a distance in [tnear, tfar]. Zero-area triangles (Ng = 0) and NaN lanes never hit.
   template <int K>
@@ -53,7 +63,7 @@ struct MoellerTrumbore {
     hit.v = V * inv;
     return valid;
   }
-  // [ch07-moeller]
+  // [ch02-moeller]
 
   /// The same test on K triangles given by their vertices: the precomputation done per ray.
   /// It gives the same bits as the precomputed form, since the edges and normal are the same
