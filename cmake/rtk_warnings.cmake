@@ -8,6 +8,6 @@ if(RTK_SANITIZE)
                                                 -fno-sanitize-recover=all)
   target_link_options(rtk_defaults INTERFACE -fsanitize=${RTK_SANITIZE})
   # Tests whose brute-force loops take minutes under the sanitizers trace a sample of their
-  # rays there (tests/support/sanitizer_build.h).
+  # rays there (lib/testing/sanitizer_build.h).
   target_compile_definitions(rtk_defaults INTERFACE RTK_SANITIZER_BUILD=1)
 endif()

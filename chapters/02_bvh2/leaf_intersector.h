@@ -108,7 +108,7 @@ struct LeafIntersector {
                                    Hit& hit, float& tfar) {
     bool found = false;
     for (uint32_t b = 0; b < count; ++b) {
-      TriangleHitsK<K> h;
+      TriangleHitsK<K> h{};  // a test may leave the lanes it rejects early unwritten
       const vbool<K> valid = test(pre, blocks[b], tfar, h);
       if (none(valid) || !closest_in_block(valid, h, blocks[b], hit)) continue;
       tfar = hit.t;

@@ -101,7 +101,7 @@ struct MotionLeaf {
   static RTK_INLINE bool intersect(const Precalc& pre, const Block* blocks, uint32_t count, Hit& hit, float& tfar) {
     bool found = false;
     for (uint32_t b = 0; b < count; ++b) {
-      TriangleHitsK<M> h;
+      TriangleHitsK<M> h{};  // a test may leave the lanes it rejects early unwritten
       const vbool<M> valid = test(pre, blocks[b], tfar, h);
       if (none(valid) || !closest_in_block(valid, h, blocks[b], hit)) continue;
       tfar = hit.t;
