@@ -57,15 +57,4 @@ template double sah_cost<4>(const BuildTree<4>&, double, double);
 template double sah_cost<8>(const BuildTree<8>&, double, double);
 template double sah_cost<16>(const BuildTree<16>&, double, double);
 
-float rounding_margin(const Box3f& scene) {
-  if (scene.empty()) return 0.0f;
-  const float margin = reduce_max(scene.size()) * 0x1p-16f;
-  return std::isfinite(margin) ? margin : 0.0f;
-}
-
-Box3f grown(const Box3f& box, float margin) {
-  if (box.empty()) return box;
-  return {box.lower - Vec3f(margin), box.upper + Vec3f(margin)};
-}
-
 }  // namespace rtk

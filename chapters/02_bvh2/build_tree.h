@@ -42,21 +42,6 @@ std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh);
 /// triangle is never hit and never disturbs the boxes of the others.
 bool is_buildable(const PrimRef& ref);
 
-// [ch02-conservative-boxes]
-/// How far every box of a BVH is grown beyond the build tree's, on every side: 2^-16 of the
-/// scene's largest extent (0 for an empty or non-finite scene). The slab test rounds its
-/// distances, so a ray through a triangle's corner, which touches the corner of its leaf's box,
-/// can find the box missed although the triangle test would hit the triangle; the margin absorbs
-/// those errors for rays that start within some forty scene sizes, and costs nothing
-/// measurable. It also makes every structure find the same hits: a triangle the test hits is
-/// never culled with its box, whatever tree holds it. (Chapter 7 measures the leaks it stops;
-/// the thorough fix belongs to the traversal: Ize, "Robust BVH ray traversal", JCGT 2013.)
-float rounding_margin(const Box3f& scene);
-
-/// `box` grown by `margin` on every side; an empty box stays empty.
-Box3f grown(const Box3f& box, float margin);
-// [ch02-conservative-boxes]
-
 /// A tree whose inner nodes have 2 to N children. A child is either an inner node or a leaf; a
 /// leaf is a range [first, first + count) of `prim_ids`.
 template <int N>

@@ -63,8 +63,7 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
   BVH2 bvh;
   bvh.leaves.layout = std::string(L::kName);
   if (tree.empty()) return bvh;
-  const float margin = rounding_margin(tree.root.box);
-  bvh.bounds = grown(tree.root.box, margin);
+  bvh.bounds = tree.root.box;
   bvh.depth = tree_depth(tree);
   if (bvh.depth + 1 > kBvh2StackSize)
     throw std::invalid_argument("a binary tree of depth " + std::to_string(bvh.depth) +
@@ -89,9 +88,8 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
     if (in.num_children != 2)
       throw std::invalid_argument("binary node " + std::to_string(order[k]) + " has " +
                                   std::to_string(in.num_children) + " children");
-    // Each box grown by the rounding margin (build_tree.h), so that no rounding culls a hit.
-    const Box3f l = grown(in.children[0].box, margin);
-    const Box3f r = grown(in.children[1].box, margin);
+    const Box3f& l = in.children[0].box;
+    const Box3f& r = in.children[1].box;
     Node2& out = bvh.nodes[k];
     for (int axis = 0; axis < 3; ++axis) {
       float* row = axis == 0 ? out.x : axis == 1 ? out.y : out.z;

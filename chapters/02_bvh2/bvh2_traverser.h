@@ -1,6 +1,6 @@
 /// \file
-/// Single-ray traversal of a BVH2, generic over the leaf intersector (see
-/// triangle1_intersector.h for what a leaf intersector provides).
+/// Single-ray traversal of a BVH2, generic over the leaf intersector (see leaf_intersector.h
+/// for what a leaf intersector provides).
 #pragma once
 
 #ifndef RTK_ISA
@@ -13,6 +13,7 @@
 #include "01_base/platform.h"
 #include "01_base/simd.h"
 #include "02_bvh2/bvh2.h"
+#include "02_bvh2/conservative_exit.h"
 
 namespace rtk::RTK_ISA {
 
@@ -49,8 +50,9 @@ RTK_INLINE uint32_t intersect_node2(const Node2& node, const Bvh2Ray& ray, vfloa
   // The ray's limits come last: where a slab gives 0 * inf = NaN (a ray in the plane of a
   // face), max returns its second operand and the NaN drops out instead of rejecting the box.
   dist = max(max(tx, ty), max(tz, ray.limits));
-  // Lanes 2-3 hold minus the exit distances: move them under lanes 0-1 and compare.
-  const vfloat<4> exit = -shuffle<2, 3, 2, 3>(dist);
+  // Lanes 2-3 hold minus the exit distances: move them under lanes 0-1, widen them by the
+  // rounding bound (conservative_exit.h), and compare.
+  const vfloat<4> exit = widen_exit(-shuffle<2, 3, 2, 3>(dist));
   return movemask(dist <= exit) & 3;
 }
 // [ch02-box-test]
@@ -77,6 +79,7 @@ bool traverse_bvh2(const BVH2& bvh, const Ray& ray, const Vec3f& rdir, Hit& hit)
     return vfloat<4>::load(row);
   };
   r.limits = make_limits(tfar);
+  float cull = conservative_tfar(tfar);  // pushed entries beyond it are skipped
 
   struct Entry {
     NodeRef ref;
@@ -117,13 +120,14 @@ bool traverse_bvh2(const BVH2& bvh, const Ray& ray, const Vec3f& rdir, Hit& hit)
       } else if (Leaf::intersect(pre, ray, blocks, leaf_blocks(cur), hit, tfar)) {
         found = true;
         r.limits = make_limits(tfar);
+        cull = conservative_tfar(tfar);
       }
     }
   pop:
     // Pop, skipping entries whose box begins beyond the closest hit found since their push.
     // The bottom entry's distance is -inf: it is never skipped, and it ends the loop.
     do --sp;
-    while (sp->dist > tfar);
+    while (sp->dist > cull);
     cur = sp->ref;
   }
   // [ch02-traverse]

@@ -171,13 +171,10 @@ TEST_CASE("ch02: the BVH2 node keeps both children's planes of an axis in one ro
   REQUIRE(bvh.nodes.size() == 1);
   CHECK(bvh.root == 0);
   const Node2& n = bvh.nodes[0];
-  // The median split on x puts the triangle at the origin left. Every plane is moved outward
-  // by the rounding margin: 2^-16 of the scene's largest extent (7).
-  const float m = rounding_margin(mesh.bounds());
-  CHECK(m == 7 * 0x1p-16f);
-  CHECK(std::vector<float>(n.x, n.x + 4) == std::vector<float>{0 - m, 5 - m, 2 + m, 6 + m});
-  CHECK(std::vector<float>(n.y, n.y + 4) == std::vector<float>{0 - m, 5 - m, 4 + m, 7 + m});
-  CHECK(std::vector<float>(n.z, n.z + 4) == std::vector<float>{0 - m, 5 - m, 0 + m, 6 + m});
+  // The median split on x puts the triangle at the origin left.
+  CHECK(std::vector<float>(n.x, n.x + 4) == std::vector<float>{0, 5, 2, 6});
+  CHECK(std::vector<float>(n.y, n.y + 4) == std::vector<float>{0, 5, 4, 7});
+  CHECK(std::vector<float>(n.z, n.z + 4) == std::vector<float>{0, 5, 0, 6});
   CHECK(is_leaf(n.children[0]));
   CHECK(leaf_blocks(n.children[0]) == 1);
   CHECK(leaf_offset(n.children[1]) == sizeof(Triangle1));

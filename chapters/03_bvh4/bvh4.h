@@ -88,8 +88,7 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
   BVHN<N> bvh;
   bvh.leaves.layout = std::string(L::kName);
   if (tree.empty()) return bvh;
-  const float margin = rounding_margin(tree.root.box);
-  bvh.bounds = grown(tree.root.box, margin);
+  bvh.bounds = tree.root.box;
   bvh.depth = tree_depth(tree);
   if (bvh.depth > kBvhMaxDepth)
     throw std::invalid_argument("a tree of depth " + std::to_string(bvh.depth) +
@@ -121,8 +120,7 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
     for (int c = 0; c < N; ++c) {
       const bool used = c < in.num_children;
       const auto& child = in.children[size_t(used ? c : 0)];
-      // Each box grown by chapter 2's rounding margin, so that no rounding culls a hit.
-      const Box3f box = used ? grown(child.box, margin) : Box3f(Vec3f(inf), Vec3f(inf));
+      const Box3f box = used ? child.box : Box3f(Vec3f(inf), Vec3f(inf));
       out.lower_x[c] = box.lower.x, out.upper_x[c] = box.upper.x;
       out.lower_y[c] = box.lower.y, out.upper_y[c] = box.upper.y;
       out.lower_z[c] = box.lower.z, out.upper_z[c] = box.upper.z;

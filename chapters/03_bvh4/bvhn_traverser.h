@@ -17,6 +17,7 @@
 
 #include "01_base/platform.h"
 #include "01_base/simd.h"
+#include "02_bvh2/conservative_exit.h"
 #include "03_bvh4/bvh4.h"
 
 namespace rtk::RTK_ISA {
@@ -29,7 +30,8 @@ struct BvhNRay {
   /// and lets the compiler read the plane straight from memory into the subtraction.
   vfloat<N> neg_rdir_x, neg_rdir_y, neg_rdir_z;
   /// The ray's interval, clamped to finite values: unused child slots have all bounds at +inf,
-  /// and only a finite interval keeps such a box out whatever the direction.
+  /// and only a finite interval keeps such a box out whatever the direction. tfar is widened
+  /// like a slab exit (conservative_tfar).
   vfloat<N> tnear, tfar;
   /// Byte offsets in a node of the near and far rows of each axis, chosen by direction sign.
   size_t near_x, near_y, near_z, far_x, far_y, far_z;
@@ -37,7 +39,7 @@ struct BvhNRay {
 
 /// Prepares a valid ray for the N-wide box test, once per ray.
 template <int N>
-RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray) {
+RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, bool conservative = true) {
   constexpr float kMax = std::numeric_limits<float>::max();
   BvhNRay<N> r;
   r.org_x = vfloat<N>(ray.org.x), r.org_y = vfloat<N>(ray.org.y), r.org_z = vfloat<N>(ray.org.z);
@@ -46,7 +48,7 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray) {
   const Vec3f rdir{1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
   r.neg_rdir_x = vfloat<N>(-rdir.x), r.neg_rdir_y = vfloat<N>(-rdir.y), r.neg_rdir_z = vfloat<N>(-rdir.z);
   r.tnear = vfloat<N>(ray.tnear > -kMax ? ray.tnear : -kMax);
-  r.tfar = vfloat<N>(ray.tfar < kMax ? ray.tfar : kMax);
+  r.tfar = vfloat<N>(conservative_tfar(ray.tfar, conservative));
   // [ch03-near-far-offsets]
   // Rows are N floats; the two rows of an axis are adjacent, lower first.
   constexpr size_t kRow = sizeof(float) * N;
@@ -59,8 +61,8 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray) {
 
 /// Lowers the far end of the ray's interval after a hit.
 template <int N>
-RTK_INLINE void shorten(BvhNRay<N>& r, float tfar) {
-  r.tfar = vfloat<N>(tfar < std::numeric_limits<float>::max() ? tfar : std::numeric_limits<float>::max());
+RTK_INLINE void shorten(BvhNRay<N>& r, float tfar, bool conservative = true) {
+  r.tfar = vfloat<N>(conservative_tfar(tfar, conservative));
 }
 
 /// Tests the ray against the N children of a node. Returns the hit mask (bit i for child i)
@@ -95,8 +97,12 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
   // [ch03-box-combine]
   // The ray's own limits come last: where a slab gives 0 * inf = NaN (a ray lying in the
   // plane of a face), min and max return their second operand and the NaN drops out.
+  // The slabs' exit is widened by its rounding bound before the ray's own (already widened)
+  // limit joins it, so that rounding never separates an entry from an equal exit.
   dist = max(max(nx, ny), max(nz, r.tnear));
-  const vfloat<N> exit = min(min(fx, fy), min(fz, r.tfar));
+  vfloat<N> exit;
+  if constexpr (T.conservative_exits) exit = min(widen_exit(min(min(fx, fy), fz)), r.tfar);
+  else exit = min(min(fx, fy), min(fz, r.tfar));
   return movemask(dist <= exit);
   // [ch03-box-combine]
 }
@@ -201,10 +207,13 @@ struct StatsCounter<true> {
 template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats>
 bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kStats>& stats) {
   const typename Leaf::Precalc pre(ray);
-  BvhNRay<N> r = make_bvhn_ray<N>(ray);
+  constexpr bool kWiden = T.conservative_exits;
+  BvhNRay<N> r = make_bvhn_ray<N>(ray, kWiden);
   float tfar = ray.tfar;
-  // Cull at pop needs shrinking hits; an occlusion ray stops at its first hit.
+  // Cull at pop needs shrinking hits; an occlusion ray stops at its first hit. Pushed entries
+  // beyond the widened far end are culled (conservative_exit.h).
   constexpr bool kCull = T.cull_at_pop && !kOcclusion;
+  float cull = conservative_tfar(tfar, kWiden);
 
   BvhStackEntry stack[kBvhStackSize<N>];
   BvhStackEntry* sp = stack;
@@ -228,7 +237,7 @@ bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kS
       if (mask == 0) {
         if constexpr (T.early_pop) {
           --sp;
-          if (kCull && next.dist > tfar) {
+          if (kCull && next.dist > cull) {
             stats.cull();
             goto pop;
           }
@@ -255,14 +264,15 @@ bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kS
         if (Leaf::occluded(pre, ray, blocks, count, tfar)) return true;
       } else if (Leaf::intersect(pre, ray, blocks, count, hit, tfar)) {
         found = true;
-        shorten(r, tfar);
+        shorten(r, tfar, kWiden);
+        cull = conservative_tfar(tfar, kWiden);
       }
     }
   pop:
     // [ch03-pop]
     --sp;
     if constexpr (kCull) {
-      while (sp->dist > tfar) {
+      while (sp->dist > cull) {
         stats.cull();
         --sp;
       }
@@ -308,22 +318,22 @@ void occluded_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<uint
 }
 
 // [ch03-batch-kernels]
-/// The batch kernels of an N-wide BVH whose leaves Leaf reads, all tricks on, in the form every
-/// structure hands out (02_bvh2/trace_kernels.h): `structure` is the BVHN<N>. Chapters 6 to 9
-/// make their kernels with this too.
-template <int N, class Leaf>
+/// The batch kernels of an N-wide BVH whose leaves Leaf reads, all tricks on unless T says
+/// otherwise, in the form every structure hands out (02_bvh2/trace_kernels.h): `structure` is
+/// the BVHN<N>. Chapters 6 to 9 make their kernels with this too.
+template <int N, class Leaf, Tricks T = Tricks{}>
 void intersect_batch(const void* structure, std::span<const Ray> rays, std::span<Hit> hits) {
   require_same_size(rays.size(), hits.size());
-  intersect_rays<N, Leaf, Tricks{}, false>(*static_cast<const BVHN<N>*>(structure), rays, hits, nullptr);
+  intersect_rays<N, Leaf, T, false>(*static_cast<const BVHN<N>*>(structure), rays, hits, nullptr);
 }
-template <int N, class Leaf>
+template <int N, class Leaf, Tricks T = Tricks{}>
 void occluded_batch(const void* structure, std::span<const Ray> rays, std::span<uint8_t> occluded) {
   require_same_size(rays.size(), occluded.size());
-  occluded_rays<N, Leaf, Tricks{}, false>(*static_cast<const BVHN<N>*>(structure), rays, occluded, nullptr);
+  occluded_rays<N, Leaf, T, false>(*static_cast<const BVHN<N>*>(structure), rays, occluded, nullptr);
 }
-template <int N, class Leaf>
+template <int N, class Leaf, Tricks T = Tricks{}>
 constexpr TraceKernels bvhn_batch_kernels() {
-  return {&intersect_batch<N, Leaf>, &occluded_batch<N, Leaf>};
+  return {&intersect_batch<N, Leaf, T>, &occluded_batch<N, Leaf, T>};
 }
 // [ch03-batch-kernels]
 

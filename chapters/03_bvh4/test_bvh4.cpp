@@ -288,13 +288,11 @@ TEST_CASE("ch03: node layout and what is refused") {
   REQUIRE(bvh.nodes.size() == 1);
   const Node4& n = bvh.nodes[0];
   const float inf = std::numeric_limits<float>::infinity();
-  // Children sorted by the median splits along x, each box grown by chapter 2's rounding
-  // margin (2^-16 of the largest extent, 7); the fourth slot is unused.
-  const float m = rounding_margin(mesh.bounds());
-  CHECK(std::vector<float>(n.lower_x, n.lower_x + 4) == std::vector<float>{0 - m, 3 - m, 6 - m, inf});
-  CHECK(std::vector<float>(n.upper_x, n.upper_x + 4) == std::vector<float>{1 + m, 4 + m, 7 + m, inf});
-  CHECK(std::vector<float>(n.upper_y, n.upper_y + 4) == std::vector<float>{2 + m, 2 + m, 2 + m, inf});
-  CHECK(std::vector<float>(n.upper_z, n.upper_z + 4) == std::vector<float>{1 + m, 1 + m, 1 + m, inf});
+  // Children sorted by the median splits along x; the fourth slot is unused.
+  CHECK(std::vector<float>(n.lower_x, n.lower_x + 4) == std::vector<float>{0, 3, 6, inf});
+  CHECK(std::vector<float>(n.upper_x, n.upper_x + 4) == std::vector<float>{1, 4, 7, inf});
+  CHECK(std::vector<float>(n.upper_y, n.upper_y + 4) == std::vector<float>{2, 2, 2, inf});
+  CHECK(std::vector<float>(n.upper_z, n.upper_z + 4) == std::vector<float>{1, 1, 1, inf});
   CHECK(n.children[3] == kEmptyLeaf);
   CHECK(bvh.bytes() == sizeof(Node4) + 3 * sizeof(Triangle1));
 

@@ -39,6 +39,11 @@ struct Tricks {
   /// so the nearest child is not worth sorting for. Without it, shadow rays visit nearest first
   /// like closest-hit rays.
   bool shadow_rays_in_stored_order = true;
+  /// Widen every box's exit distance by the slab test's rounding bound (chapter 2's
+  /// conservative_exit.h), so that no box whose triangle the leaf test would hit is culled.
+  /// Not a speed trick but a correctness one: it is a switch only so that chapter 7 can measure
+  /// the leaks it stops and this chapter what it costs.
+  bool conservative_exits = true;
 
   constexpr bool operator==(const Tricks&) const = default;
 };
@@ -62,7 +67,8 @@ inline constexpr NamedTricks kTrickConfigs[] = {
     {"no_sorted_push", Tricks{.sorted_push = false}},
     {"no_prefetch", Tricks{.prefetch_children = false}},
     {"no_stored_order", Tricks{.shadow_rays_in_stored_order = false}},
-    {"none", Tricks{false, false, false, false, false, false, false, false}},
+    {"no_conservative_exits", Tricks{.conservative_exits = false}},
+    {"none", Tricks{false, false, false, false, false, false, false, false, false}},
 };
 inline constexpr size_t kTrickConfigCount = sizeof(kTrickConfigs) / sizeof(kTrickConfigs[0]);
 

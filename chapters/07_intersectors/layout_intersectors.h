@@ -33,4 +33,9 @@ void occluded(Isa isa, const LayoutBVH<N>& bvh, IntersectorKind kind, std::span<
 }
 // [ch07-layout-kernels]
 
+/// BVH4 kernels without chapter 2's exit widening (Tricks::conservative_exits off), for the
+/// chart of what the widening buys: triangle4.moeller, triangle4v.pluecker and
+/// triangle4v.watertight for `kind`. `structure` is the LayoutBVH<4>'s `bvh`.
+RTK_DECLARE_FOR_EACH_ISA(TraceKernels unwidened_bvh4_kernels(IntersectorKind kind))
+
 }  // namespace rtk

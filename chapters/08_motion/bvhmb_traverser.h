@@ -46,7 +46,7 @@ RTK_INLINE uint32_t intersect_node_mb(const NodeMB<N>& node, const BvhNRay<N>& r
   const vfloat<N> fz = (r.org_z - plane(r.far_z)) * r.neg_rdir_z;
   // [ch08-box-at-time]
   dist = max(max(nx, ny), max(nz, r.tnear));
-  const vfloat<N> exit = min(min(fx, fy), min(fz, r.tfar));
+  const vfloat<N> exit = min(widen_exit(min(min(fx, fy), fz)), r.tfar);  // chapter 2's widening
   return movemask(dist <= exit);
 }
 
@@ -130,6 +130,7 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
   BvhNRay<N> r = make_bvhn_ray<N>(ray);
   const vfloat<N> time(ray.time);
   float tfar = ray.tfar;
+  float cull = conservative_tfar(tfar);
 
   BvhStackEntry stack[kBvhMbMaxDepth * (N - 1) + 1];
   BvhStackEntry* sp = stack;
@@ -147,7 +148,7 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
       // 0 children hit: the next entry is already read (early pop).
       if (mask == 0) {
         --sp;
-        if (!kOcclusion && next.dist > tfar) goto pop;
+        if (!kOcclusion && next.dist > cull) goto pop;
         cur = next.ref;
         continue;
       }
@@ -165,12 +166,13 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
       } else if (Leaf::intersect(pre, blocks, count, hit, tfar)) {
         found = true;
         shorten(r, tfar);
+        cull = conservative_tfar(tfar);
       }
     }
   pop:
     --sp;
     if constexpr (!kOcclusion)
-      while (sp->dist > tfar) --sp;
+      while (sp->dist > cull) --sp;
     cur = sp->ref;
   }
   return found;

@@ -13,7 +13,8 @@ bool EmbreeScene::monitor(void* user, ssize_t bytes, bool /*post*/) {
   return true;  // never refuse an allocation: we measure, we do not limit
 }
 
-EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads, const std::string& isa) : threads_(threads) {
+EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads, const std::string& isa, bool robust)
+    : threads_(threads) {
   const std::string config = "threads=" + std::to_string(threads) + (isa.empty() ? "" : ",max_isa=" + isa);
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw std::runtime_error("Embree: cannot create a device (" + config + ")");
@@ -24,6 +25,7 @@ EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads, const std::strin
   const int64_t before_buffers = allocated_;
   scene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
+  if (robust) rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));

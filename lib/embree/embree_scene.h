@@ -33,8 +33,9 @@ class EmbreeScene {
   /// if `isa` is not empty, with Embree's kernels for at most that instruction set (its
   /// "max_isa" option: "sse4.2", "avx", "avx2", ...; Embree then uses the node width and
   /// leaves it chooses for that ISA). Throws std::runtime_error with Embree's message when the
-  /// device cannot be made.
-  EmbreeScene(const TriangleMesh& mesh, int threads, const std::string& isa = "");
+  /// device cannot be made. `robust` sets RTC_SCENE_FLAG_ROBUST, Embree's mode that "avoids
+  /// optimizations that reduce arithmetic accuracy" (its watertight traversal and test).
+  EmbreeScene(const TriangleMesh& mesh, int threads, const std::string& isa = "", bool robust = false);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
