@@ -1,10 +1,10 @@
 #include "11_materials/texture.h"
 
-#include <stb/stb_image.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "image/image_decode.h"
 
 namespace rtk {
 
@@ -61,34 +61,29 @@ float srgb_to_linear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+// [ch11-load-texture]
 std::shared_ptr<ImageTexture> load_image_texture(const std::string& path, ColorEncoding encoding,
                                                  WrapMode wrap) {
-  int w = 0, h = 0, channels = 0;
-  std::vector<Color> texels;
-  auto fail = [&](const char* what) {
-    const char* reason = stbi_failure_reason();
-    return std::runtime_error("cannot load texture '" + path + "': " + (reason ? reason : what));
-  };
-  if (stbi_is_hdr(path.c_str())) {
-    float* data = stbi_loadf(path.c_str(), &w, &h, &channels, 3);
-    if (!data) throw fail("unreadable");
-    texels.resize(static_cast<std::size_t>(w) * h);
-    for (std::size_t i = 0; i < texels.size(); ++i)
-      texels[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
-    stbi_image_free(data);
-  } else {
-    unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
-    if (!data) throw fail("unreadable");
-    // Decode through a 256-entry table: the curve costs a pow per channel otherwise.
+  // lib/image's bounded reader: a damaged or truncated file is an error naming it, never a
+  // hang or a texture of whatever memory held.
+  DecodedImage file = read_image_file(path);
+  if (!file.linear) {
+    // Decode through a 256-entry table: the curve costs a pow per channel otherwise. Values of
+    // 16-bit files fall between its entries and take the curve itself.
     float table[256];
     for (int i = 0; i < 256; ++i)
       table[i] = encoding == ColorEncoding::srgb ? srgb_to_linear(i / 255.0f) : i / 255.0f;
-    texels.resize(static_cast<std::size_t>(w) * h);
-    for (std::size_t i = 0; i < texels.size(); ++i)
-      texels[i] = {table[data[3 * i]], table[data[3 * i + 1]], table[data[3 * i + 2]]};
-    stbi_image_free(data);
+    auto decode = [&](float v) {
+      const float scaled = v * 255.0f;
+      const int i = static_cast<int>(scaled + 0.5f);
+      if (std::fabs(scaled - static_cast<float>(i)) < 1e-3f) return table[i];
+      return encoding == ColorEncoding::srgb ? srgb_to_linear(v) : v;
+    };
+    for (Color& c : file.image.pixels) c = {decode(c.r), decode(c.g), decode(c.b)};
   }
-  return std::make_shared<ImageTexture>(w, h, std::move(texels), wrap);
+  return std::make_shared<ImageTexture>(file.image.width, file.image.height,
+                                        std::move(file.image.pixels), wrap);
 }
+// [ch11-load-texture]
 
 }  // namespace rtk

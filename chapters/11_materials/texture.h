@@ -86,9 +86,10 @@ class MappedTexture final : public Texture {
 /// The sRGB transfer curve inverted: an encoded value in [0, 1] to linear (IEC 61966-2-1).
 float srgb_to_linear(float encoded);
 
-/// Loads an image file as a texture through stb_image (PNG, JPEG, TGA, BMP, PPM/PGM, HDR,
-/// ...). Radiance .hdr files are linear; 8-bit files are decoded by `encoding`. Throws
-/// std::runtime_error naming the file and stb_image's reason when the file cannot be read.
+/// Loads an image file as a texture through lib/image's bounded reader (PNG, JPEG, TGA,
+/// PPM/PGM, Radiance HDR, PFM: image/image_decode.h). HDR and PFM files are linear; 8- and
+/// 16-bit files are decoded by `encoding`. Throws FileError (a std::runtime_error) naming the
+/// file and the reason when it cannot be read or is not a complete, valid image.
 std::shared_ptr<ImageTexture> load_image_texture(const std::string& path,
                                                  ColorEncoding encoding = ColorEncoding::srgb,
                                                  WrapMode wrap = WrapMode::repeat);

@@ -23,17 +23,18 @@ ImageFormat image_format_from_path(const std::string& path);
 /// per channel, made by `tone` (gamma, then clamping to [0, 1]); HDR (Radiance RGBE, through
 /// stb_image_write) and PFM hold linear floats and ignore `tone`. PFM is written by hand:
 /// the "PF" header, width and height, the scale -1 (negative: little-endian floats), then the
-/// rows from the BOTTOM row up, as the format requires. Throws std::invalid_argument for an
-/// unknown extension or an empty image, std::runtime_error naming the path (and the system's
-/// reason) when the file cannot be written.
+/// rows from the BOTTOM row up, as the format requires. The file is encoded in memory and
+/// written all or nothing (lib/io's write_file: a temporary file renamed when complete).
+/// Throws std::invalid_argument for an unknown extension or an empty image, FileError (a
+/// std::runtime_error) naming the path and the system's reason when the file cannot be written.
 void write_image(const std::string& path, const Image& image, const ToneMap& tone = {});
 // [image-write]
 
-/// Reads an image written by write_image (or any PNG, TGA, PPM or HDR stb_image reads, and
-/// PFM files in either byte order, colour "PF" or grey "Pf"). 8-bit files come back as their
-/// stored values / 255, with no attempt to undo the tone mapping; HDR and PFM as the linear
-/// floats. Rows are returned top row first whatever the file's order. Throws
-/// std::runtime_error naming the path and the reason.
+/// Reads an image written by write_image, or any image image/image_decode.h reads (PNG, JPEG,
+/// TGA, PPM/PGM, Radiance HDR, PFM). 8-bit files come back as their stored values / 255, with
+/// no attempt to undo the tone mapping; HDR and PFM as the linear floats. Rows are returned top
+/// row first whatever the file's order. Throws FileError (a std::runtime_error) naming the
+/// path and the reason.
 Image read_image(const std::string& path);
 
 }  // namespace rtk
