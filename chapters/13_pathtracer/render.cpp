@@ -78,6 +78,8 @@ RenderStats& RenderStats::operator+=(const RenderStats& o) {
   rays += o.rays;
   shadow_rays += o.shadow_rays;
   invalid_samples += o.invalid_samples;
+  tiles += o.tiles;
+  tiles_done += o.tiles_done;
   return *this;
 }
 
@@ -116,7 +118,13 @@ RenderStats render_tiles(const PathTracer& tracer, const RenderOptions& options,
   Timer wall;
   auto body = [&](const tbb::blocked_range<size_t>& range) {
     for (size_t t = range.begin(); t != range.end(); ++t) {
+      // [ch13-stop]
+      // A stop request is honoured between tiles: a tile once begun is finished, so every
+      // pixel holds all its samples or none, and the image written is what was rendered.
+      if (options.stop && options.stop->load(std::memory_order_relaxed)) continue;
+      // [ch13-stop]
       RenderStats stats;
+      stats.tiles_done = 1;
       Timer timer;
       tracer.render_tile(tiles[t], first, count, fb, stats);
       stats.thread_seconds = timer.seconds();
@@ -131,6 +139,7 @@ RenderStats render_tiles(const PathTracer& tracer, const RenderOptions& options,
   tbb::task_arena arena(threads);
   arena.execute([&] { tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), body); });
   total.seconds = wall.seconds();
+  total.tiles = tiles.size();
   total.invalid_samples = static_cast<uint64_t>(fb.invalid_samples() - invalid_before);
   return total;
 }

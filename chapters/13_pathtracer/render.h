@@ -5,6 +5,7 @@
 /// on the thread count or on the order in which tiles finish.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -39,6 +40,10 @@ struct RenderOptions {
   /// The guide's `-renderer debug`: instead of path tracing, each pixel shows |cos| between the
   /// camera ray and the surface it hits (an "eye light"), which needs no light in the scene.
   bool eye_light = false;
+  /// A request to stop, read before each tile (an interrupted `rtk render` sets it from its
+  /// signal handler): once it reads true, the tiles not yet begun are skipped and the frame
+  /// keeps what was rendered. Null: the frame always finishes.
+  const std::atomic<bool>* stop = nullptr;
 };
 // [ch13-render-options]
 
@@ -51,6 +56,11 @@ struct RenderStats {
   uint64_t rays = 0;          ///< rays traced: camera, bounce and shadow rays
   uint64_t shadow_rays = 0;   ///< of which occlusion (shadow) rays
   uint64_t invalid_samples = 0;  ///< samples that were not finite, dropped by the framebuffer
+  uint64_t tiles = 0;            ///< tiles of the frame (of every pass, for a sum of passes)
+  uint64_t tiles_done = 0;       ///< of which rendered: fewer when RenderOptions::stop was set
+
+  /// Whether the render was stopped before every tile was rendered.
+  bool stopped() const { return tiles_done < tiles; }
 
   /// Camera paths per second.
   double samples_per_second() const { return seconds > 0 ? samples / seconds : 0; }

@@ -152,17 +152,21 @@ std::shared_ptr<const V> current_version(const Object& o, ObjectKind kind, const
 
 // [ch14-render-frame]
 RenderStats Device::render_frame(const Handle& renderer, const Handle& camera, const Handle& scene,
-                                 const Handle& framebuffer) {
-  return render(renderer, camera, scene, framebuffer, std::nullopt);
+                                 const Handle& framebuffer, const std::atomic<bool>* stop) {
+  return render(renderer, camera, scene, framebuffer, std::nullopt, stop);
 }
 
-RenderStats Device::render_samples(const Handle& renderer, const Handle& camera, const Handle& scene,
-                                   const Handle& framebuffer, uint32_t first_sample, uint32_t count) {
-  return render(renderer, camera, scene, framebuffer, std::make_pair(first_sample, count));
+RenderStats Device::render_samples(const Handle& renderer, const Handle& camera,
+                                   const Handle& scene, const Handle& framebuffer,
+                                   uint32_t first_sample, uint32_t count,
+                                   const std::atomic<bool>* stop) {
+  return render(renderer, camera, scene, framebuffer, std::make_pair(first_sample, count), stop);
 }
 
 RenderStats Device::render(const Handle& renderer, const Handle& camera, const Handle& scene,
-                           const Handle& framebuffer, std::optional<std::pair<uint32_t, uint32_t>> samples) {
+                           const Handle& framebuffer,
+                           std::optional<std::pair<uint32_t, uint32_t>> samples,
+                           const std::atomic<bool>* stop) {
   using namespace device_detail;
   // Take the four current versions: commits made while the frame renders go to the next one.
   const auto r = current_version<RendererVersion>(own(state_->counters, renderer, "render_frame"), ObjectKind::renderer, "render_frame", "renderer");
@@ -177,6 +181,7 @@ RenderStats Device::render(const Handle& renderer, const Handle& camera, const H
   std::lock_guard lock(f->mutex);
   options.width = f->framebuffer.width();
   options.height = f->framebuffer.height();
+  options.stop = stop;
   const Renderer frame_renderer(frame_scene, *s->kernels, options);
   if (samples) return frame_renderer.render_pass(f->framebuffer, samples->first, samples->second);
   f->framebuffer.clear();

@@ -151,13 +151,16 @@ class Device {
   /// Renders one frame: clears the framebuffer and path traces the scene's committed version
   /// through the camera's with the renderer's options (RenderOptions; width and height are the
   /// framebuffer's). All four objects must be committed. Returns what the frame did and took.
+  /// `stop`, when given, is chapter 13's RenderOptions::stop: once it reads true the frame
+  /// skips the tiles it has not begun (RenderStats::stopped() then says so).
   RenderStats render_frame(const Handle& renderer, const Handle& camera, const Handle& scene,
-                           const Handle& framebuffer);
+                           const Handle& framebuffer, const std::atomic<bool>* stop = nullptr);
   /// Progressive refinement: adds samples first_sample .. first_sample + count - 1 of every
   /// pixel to the framebuffer without clearing it (the renderer's spp is not used). Calls with
   /// consecutive ranges give exactly the image of one call over the whole range.
   RenderStats render_samples(const Handle& renderer, const Handle& camera, const Handle& scene,
-                             const Handle& framebuffer, uint32_t first_sample, uint32_t count);
+                             const Handle& framebuffer, uint32_t first_sample, uint32_t count,
+                             const std::atomic<bool>* stop = nullptr);
   /// What the scene's committed version is traced with, e.g. "accel bvh8.objectsplit, tri
   /// triangle8.moeller, isa avx2 (...); build 0.002 s, 0.1 MB".
   std::string kernels_summary(const Handle& scene) const;
@@ -173,8 +176,10 @@ class Device {
   DeviceCounts counts() const;
 
  private:
-  RenderStats render(const Handle& renderer, const Handle& camera, const Handle& scene, const Handle& framebuffer,
-                     std::optional<std::pair<uint32_t, uint32_t>> samples);
+  RenderStats render(const Handle& renderer, const Handle& camera, const Handle& scene,
+                     const Handle& framebuffer,
+                     std::optional<std::pair<uint32_t, uint32_t>> samples,
+                     const std::atomic<bool>* stop);
   struct State;
   std::shared_ptr<State> state_;
 };

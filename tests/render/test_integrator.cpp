@@ -2,6 +2,7 @@
 // passes, and convergence at the Monte Carlo rate.
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <cmath>
 #include <vector>
 
@@ -170,6 +171,79 @@ TEST_CASE("ch13: renderer refuses bad options") {
   scene = furnace_scene(false);
   scene.triangle_material[0] = 99;
   CHECK_THROWS_WITH_AS(Renderer(scene, kernels, bad), doctest::Contains("material"), std::invalid_argument);
+}
+
+namespace {
+
+// Kernels that ask the render to stop at their first closest-hit batch: the tile under way is
+// finished, the others are skipped. The Tracer's structure is this object, whose kernels raise
+// the flag and pass the rays on to the real ones.
+class StoppingKernels : public RayKernels {
+ public:
+  StoppingKernels(const RayKernels& inner, std::atomic<bool>& stop)
+      : inner_(inner.tracer()), stop_(stop), name_(inner.name()) {}
+  Tracer tracer() const override {
+    Tracer t;
+    t.structure = this;
+    t.kernels.intersect = [](const void* self, std::span<const Ray> rays, std::span<Hit> hits) {
+      const auto& k = *static_cast<const StoppingKernels*>(self);
+      k.stop_ = true;
+      k.inner_.intersect(rays, hits);
+    };
+    t.kernels.occluded = [](const void* self, std::span<const Ray> rays,
+                            std::span<uint8_t> occluded) {
+      static_cast<const StoppingKernels*>(self)->inner_.occluded(rays, occluded);
+    };
+    return t;
+  }
+  std::string name() const override { return name_; }
+
+ private:
+  Tracer inner_;
+  std::atomic<bool>& stop_;
+  std::string name_;
+};
+
+}  // namespace
+
+TEST_CASE(
+    "ch13: a stop request ends the render at the next tile, keeping every finished tile whole") {
+  const RenderScene scene = furnace_scene(false);
+  const AccelKernels kernels(scene, {});
+  RenderOptions options;
+  options.width = 64, options.height = 32, options.spp = 2, options.threads = 1;
+  std::atomic<bool> stop{false};
+  options.stop = &stop;
+  // Not asked: every tile.
+  Framebuffer full(64, 32);
+  const RenderStats all = Renderer(scene, kernels, options).render(full);
+  CHECK(all.tiles == 8);
+  CHECK(all.tiles_done == 8);
+  CHECK(!all.stopped());
+  // Asked before the start: nothing is rendered.
+  stop = true;
+  Framebuffer none(64, 32);
+  const RenderStats nothing = Renderer(scene, kernels, options).render(none);
+  CHECK(nothing.tiles_done == 0);
+  CHECK(nothing.stopped());
+  CHECK(none.weight(0, 0) == 0.0f);
+  // Asked during the first tile (one thread): that tile is finished with all its samples and
+  // equal to the full render's, the others stay empty.
+  stop = false;
+  const StoppingKernels stopping(kernels, stop);
+  Framebuffer part(64, 32);
+  const RenderStats some = Renderer(scene, stopping, options).render(part);
+  CHECK(some.tiles_done == 1);
+  CHECK(some.stopped());
+  int whole = 0, empty = 0;
+  const Image a = part.resolve(), b = full.resolve();
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) {
+      if (part.weight(x, y) == 2.0f && a.at(x, y) == b.at(x, y)) ++whole;
+      if (part.weight(x, y) == 0.0f) ++empty;
+    }
+  CHECK(whole == 16 * 16);
+  CHECK(empty == 64 * 32 - 16 * 16);
 }
 
 TEST_CASE("ch13: every ISA's kernels render the image the scalar kernels render") {
