@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "io/read_file.h"
+#include "scene/mtl_file.h"
 #include "scene/parse_number.h"
 #include "scene/text_lines.h"
 
@@ -20,77 +21,6 @@ using scene_io::fail;
 using scene_io::parse_float;
 using scene_io::TextLine;
 using scene_io::Where;
-
-// The MTL keys that become parameters of make_material("OBJ", ...).
-const std::set<std::string_view> kColorKeys = {"Kd", "Ks", "Ka", "Ke", "Tf"};
-const std::set<std::string_view> kScalarKeys = {"Ns", "Ni", "d", "illum"};
-
-// Reads an MTL file into materials added to the scene; returns name -> material index.
-std::map<std::string, uint32_t> load_mtl(const std::filesystem::path& path, RenderScene& scene,
-                                         const WarningHandler& warn) {
-  const std::string file = path.string();
-  const std::string text = read_file(path);
-  std::deque<std::string> storage;
-  const std::vector<TextLine> lines = scene_io::split_lines(text, file, storage);
-  std::map<std::string, uint32_t> names;
-  std::set<std::string> warned;
-  std::string current;
-  ParameterList params;
-  bool open = false;
-  auto finish = [&] {
-    if (!open) return;
-    const std::string prefix = file + ": material '" + current + "': ";
-    Material m = make_material("OBJ", params, [&](const std::string& w) {
-      if (warn) warn(prefix + w);
-    });
-    m.name = current;
-    names[current] = scene.add_material(std::move(m));
-    params = ParameterList{};
-  };
-  for (const TextLine& l : lines) {
-    const Where where{file, l.line};
-    const std::string_view key = l.tokens[0];
-    const size_t args = l.tokens.size() - 1;
-    if (key == "newmtl") {
-      if (args != 1) fail(where, "newmtl takes one name");
-      finish();
-      current = std::string(l.tokens[1]);
-      open = true;
-      continue;
-    }
-    if (!open) fail(where, "'" + std::string(key) + "' before the first newmtl");
-    if (kColorKeys.count(key)) {
-      if (args == 1) {
-        params.set(std::string(key), Color(parse_float(l.tokens[1], where, key)));
-      } else if (args == 3) {
-        params.set(std::string(key), Color(parse_float(l.tokens[1], where, key), parse_float(l.tokens[2], where, key),
-                                           parse_float(l.tokens[3], where, key)));
-      } else {
-        fail(where, std::string(key) + " takes 3 numbers (r g b) or 1 (a grey)");
-      }
-    } else if (kScalarKeys.count(key) || key == "Tr") {
-      if (args != 1) fail(where, std::string(key) + " takes one number");
-      const float value = parse_float(l.tokens[1], where, key);
-      // Tr is the transparency some exporters write instead of the dissolve d.
-      params.set(key == "Tr" ? "d" : std::string(key), key == "Tr" ? 1.0f - value : value);
-    } else if (key == "map_Kd") {
-      if (args < 1) fail(where, "map_Kd takes a file name");
-      // Options (-s, -o, -bm ...) come before the file name, which is the last token.
-      if (args > 1 && warn) warn(file + ":" + std::to_string(l.line) + ": map_Kd options are ignored");
-      const std::filesystem::path image = path.parent_path() / std::string(l.tokens.back());
-      try {
-        params.set("map_Kd", std::shared_ptr<const Texture>(load_image_texture(image.string())));
-      } catch (const std::exception& e) {
-        fail(where, e.what());
-      }
-    } else if (warned.insert(std::string(key)).second && warn) {
-      warn(file + ":" + std::to_string(l.line) + ": MTL key '" + std::string(key) +
-           "' is not modelled and is ignored");
-    }
-  }
-  finish();
-  return names;
-}
 
 // A corner's index: 1 is the first element read, -1 the last one read so far.
 uint32_t resolve_index(std::string_view token, size_t count, const Where& where, const char* kind) {
@@ -166,7 +96,9 @@ void load_obj_scene(const std::filesystem::path& path, RenderScene& scene, const
           const std::string_view t = rest.substr(0, s2);
           if (!t.empty()) corner.t = resolve_index(t, texcoords.size(), where, "texture");
           if (s2 != std::string_view::npos) corner.n = resolve_index(rest.substr(s2 + 1), normals.size(), where, "normal");
-          else if (t.empty()) fail(where, "bad face corner '" + std::string(c) + "' (expected i, i/t, i//n or i/t/n)");
+          else if (t.empty())
+            fail(where,
+                 "bad face corner '" + scene_io::shown(c) + "' (expected i, i/t, i//n or i/t/n)");
         }
         has_uvs |= corner.t != kAbsent;
         has_normals |= corner.n != kAbsent;
@@ -194,8 +126,9 @@ void load_obj_scene(const std::filesystem::path& path, RenderScene& scene, const
       if (it != materials.end()) {
         material = it->second;
       } else {
-        if (warn) warn(file + ":" + std::to_string(l.line) + ": material '" + std::string(l.tokens[1]) +
-                       "' is not in any mtllib read so far; using a grey Matte");
+        if (warn)
+          warn(file + ":" + std::to_string(l.line) + ": material '" + scene_io::shown(l.tokens[1]) +
+               "' is not in any mtllib read so far; using a grey Matte");
         material = kAbsent;
       }
     } else if (key == "mtllib") {
@@ -212,7 +145,8 @@ void load_obj_scene(const std::filesystem::path& path, RenderScene& scene, const
     } else if (key == "o" || key == "g" || key == "s" || key == "l" || key == "p") {
       // Names, groups and smoothing groups do not change what is rendered.
     } else if (warned.insert(std::string(key)).second && warn) {
-      warn(file + ":" + std::to_string(l.line) + ": OBJ statement '" + std::string(key) + "' is ignored");
+      warn(file + ":" + std::to_string(l.line) + ": OBJ statement '" + scene_io::shown(key) +
+           "' is ignored");
     }
   }
 

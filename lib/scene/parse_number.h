@@ -5,6 +5,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -19,20 +21,46 @@ struct Where {
   size_t line = 0;
 };
 
+/// A token as a message shows it: bytes outside printable ASCII as \\xNN, and a token longer
+/// than 40 bytes clipped with its length (a 10 MB token is not echoed whole).
+inline std::string shown(std::string_view token) {
+  constexpr size_t kShown = 40;
+  std::string out;
+  for (const char c : token.substr(0, kShown)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+      out += c;
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", u);
+      out += hex;
+    }
+  }
+  if (token.size() > kShown) out += "... (" + std::to_string(token.size()) + " bytes)";
+  return out;
+}
+
 /// Throws the FileError "FILE:LINE: message".
 [[noreturn]] inline void fail(const Where& where, const std::string& message) {
   throw FileError(where.file, where.line, message);
 }
 
-/// A finite float; `what` names the argument in the message ("-fov", "Kd").
-inline float parse_float(std::string_view token, const Where& where, std::string_view what) {
+/// A finite float in [min, max]; `what` names the argument in the message ("-fov", "Kd").
+inline float parse_float(std::string_view token, const Where& where, std::string_view what,
+                         float min = -std::numeric_limits<float>::max(),
+                         float max = std::numeric_limits<float>::max()) {
   const char* first = token.data();
   const char* last = first + token.size();
   if (first != last && *first == '+') ++first;
   float value = 0.0f;
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last || !std::isfinite(value))
-    fail(where, std::string(what) + ": '" + std::string(token) + "' is not a finite number");
+    fail(where, std::string(what) + ": '" + shown(token) + "' is not a finite number");
+  if (value < min || value > max) {
+    char range[64];
+    std::snprintf(range, sizeof range, "from %g to %g", double(min), double(max));
+    fail(where, std::string(what) + ": " + shown(token) + " is not " + range);
+  }
   return value;
 }
 
@@ -45,7 +73,7 @@ inline long long parse_int(std::string_view token, const Where& where, std::stri
   long long value = 0;
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last)
-    fail(where, std::string(what) + ": '" + std::string(token) + "' is not an integer");
+    fail(where, std::string(what) + ": '" + shown(token) + "' is not an integer");
   if (value < min || value > max)
     fail(where, std::string(what) + ": " + std::to_string(value) + " is not from " +
                     std::to_string(min) + " to " + std::to_string(max));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -12,6 +13,7 @@
 #include "io/read_file.h"
 #include "scene/obj_scene.h"
 #include "scene/parse_number.h"
+#include "scene/scene_limits.h"
 #include "scene/xml_scene.h"
 
 namespace rtk {
@@ -22,37 +24,56 @@ using scene_io::fail;
 using scene_io::Where;
 
 // Scripts may include scripts; deeper than this is taken for a script that includes itself.
-constexpr int kMaxInclude = 32;
+constexpr int kMaxInclude = kMaxScriptIncludeDepth;
+// The longest token of a script: a file name (PATH_MAX) is the longest thing it may hold.
+constexpr size_t kMaxTokenBytes = 4096;
 
 struct Token {
   std::string text;
   Where where;
 };
 
+// [ch13-script-tokens]
+// A script is a command line in a file: tokens separated by any ASCII white space (space, tab,
+// CR, LF, vertical tab, form feed), '#' to the end of the line a comment, a UTF-8 byte-order
+// mark at the start ignored. Every other control byte (NUL, ESC, ...) is binary data and an
+// error at its line; so is a token longer than any option or file name can be.
+bool is_script_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+
 std::vector<Token> tokenize(std::string_view text, const std::string& file) {
   std::vector<Token> tokens;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   size_t line = 1;
   for (size_t i = 0; i < text.size();) {
     const char c = text[i];
-    if (c == '\n') {
-      ++line;
-      ++i;
-    } else if (c == ' ' || c == '\t' || c == '\r') {
+    if (is_script_space(c)) {
+      line += c == '\n';
       ++i;
     } else if (c == '#') {
       while (i < text.size() && text[i] != '\n') ++i;
     } else {
       const size_t start = i;
-      while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != '#') {
+      for (; i < text.size() && !is_script_space(text[i]) && text[i] != '#'; ++i) {
         const unsigned char u = static_cast<unsigned char>(text[i]);
-        if (u < 0x20 || u == 0x7f) fail({file, line}, "control byte in the script (binary data?)");
-        ++i;
+        if (u < 0x20 || u == 0x7f) {
+          char hex[8];
+          std::snprintf(hex, sizeof hex, "0x%02X", u);
+          fail({file, line}, std::string("control byte ") + hex + " in the script (binary data?)");
+        }
       }
-      tokens.push_back({std::string(text.substr(start, i - start)), {file, line}});
+      const std::string_view token = text.substr(start, i - start);
+      if (token.size() > kMaxTokenBytes)
+        fail({file, line},
+             "a token of " + std::to_string(token.size()) + " bytes ('" + scene_io::shown(token) +
+                 "'): no option or file name is longer than " + std::to_string(kMaxTokenBytes));
+      tokens.push_back({std::string(token), {file, line}});
     }
   }
   return tokens;
 }
+// [ch13-script-tokens]
 
 // Reads one token list (a script or the command line) into the script state.
 class ScriptReader {
@@ -98,12 +119,12 @@ class ScriptReader {
   }
   // Runs `body`, turning the std::invalid_argument of a constructor (a light with a negative
   // radiance, a bad configuration string) into an error at the option's place.
+  // A file the option names that cannot be read or is not a valid image is reported at the
+  // option's place too, with the file's own message.
   template <class Body>
   void at(const Token& option, Body&& body) {
     try {
       body();
-    } catch (const FileError&) {
-      throw;
     } catch (const std::exception& e) {
       fail(option.where, option.text + ": " + e.what());
     }
@@ -115,7 +136,7 @@ class ScriptReader {
                              " deep (does '" + path.string() + "' include itself?)");
     std::string text;
     try {
-      text = read_file(path);
+      text = read_file(path, kMaxTextFileBytes);
     } catch (const FileError& e) {
       fail(option.where, std::string("-c: ") + e.what());
     }
@@ -129,13 +150,23 @@ class ScriptReader {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext != ".obj" && ext != ".xml")
-      fail(option.where, "-i " + path.string() + ": unknown scene format (expected .obj or .xml)");
+      fail(option.where, "-i " + scene_io::shown(path.string()) +
+                             ": unknown scene format (expected .obj or .xml)");
     if (!std::filesystem::is_regular_file(path))
       fail(option.where, "-i: cannot open '" + path.string() + "'");
     last_first_vertex_ = s_.scene.mesh.vertices.size();
     last_first_triangle_ = s_.scene.mesh.triangles.size();
-    if (ext == ".xml") load_xml_scene(path, s_.scene, warn_);
-    else load_obj_scene(path, s_.scene, warn_);
+    try {
+      if (ext == ".xml")
+        load_xml_scene(path, s_.scene, warn_);
+      else
+        load_obj_scene(path, s_.scene, warn_);
+    } catch (const FileError& e) {
+      // An error at a line of the scene file is reported there; one about the whole file
+      // (its size, its type) at the -i that named it.
+      if (e.line() != 0) throw;
+      fail(option.where, "-i: " + std::string(e.what()));
+    }
     s_.files.push_back(path);
     has_last_ = true;
   }
@@ -147,7 +178,12 @@ class ScriptReader {
     if (!std::filesystem::is_regular_file(path))
       fail(option.where, "-motion: cannot open '" + path.string() + "'");
     RenderScene t1;
-    load_obj_scene(path, t1, {});
+    try {
+      load_obj_scene(path, t1, {});
+    } catch (const FileError& e) {
+      if (e.line() != 0) throw;
+      fail(option.where, "-motion: " + std::string(e.what()));
+    }
     RenderScene& sc = s_.scene;
     const size_t nv = sc.mesh.vertices.size() - last_first_vertex_;
     const size_t nt = sc.mesh.triangles.size() - last_first_triangle_;
@@ -171,7 +207,8 @@ class ScriptReader {
     } else if (name.text == "debug") {
       s_.options.eye_light = true;
     } else {
-      fail(name.where, "-renderer: unknown renderer '" + name.text + "' (pathtracer, pt or debug)");
+      fail(name.where, "-renderer: unknown renderer '" + scene_io::shown(name.text) +
+                           "' (pathtracer, pt or debug)");
     }
     if (pos_ >= tokens_->size() || (*tokens_)[pos_].text != "{") return;
     const Token& open = (*tokens_)[pos_++];
@@ -181,7 +218,9 @@ class ScriptReader {
       if (key.text == "}") break;
       if (key.text == "{") fail(key.where, "-renderer: '{' inside a parameter block");
       const Token& eq = take(key, "'=' after the parameter name");
-      if (eq.text != "=") fail(eq.where, "-renderer: expected '=' after '" + key.text + "', found '" + eq.text + "'");
+      if (eq.text != "=")
+        fail(eq.where, "-renderer: expected '=' after '" + scene_io::shown(key.text) +
+                           "', found '" + scene_io::shown(eq.text) + "'");
       if (key.text == "depth" || key.text == "maxDepth") {
         s_.options.max_depth = static_cast<int>(integer(key, 0, 1 << 16));
       } else if (key.text == "spp") {
@@ -189,7 +228,8 @@ class ScriptReader {
       } else {
         // A parameter we do not model (minContribution, backplate, ...): its value is the
         // tokens up to the next "key =" or the closing brace.
-        warn(key.where, "-renderer: parameter '" + key.text + "' is not modelled and is ignored");
+        warn(key.where, "-renderer: parameter '" + scene_io::shown(key.text) +
+                            "' is not modelled and is ignored");
         while (pos_ < tokens_->size() && (*tokens_)[pos_].text != "}" &&
                !(pos_ + 1 < tokens_->size() && (*tokens_)[pos_ + 1].text == "="))
           ++pos_;
@@ -206,35 +246,71 @@ class ScriptReader {
     if (name == "-c") include(o);
     else if (name == "-i") geometry(o);
     else if (name == "-motion") motion(o);
-    else if (name == "-vp") cam.position = vec3(o);
-    else if (name == "-vi") cam.look_at = vec3(o);
-    else if (name == "-vd") cam.look_at = cam.position + vec3(o);
-    else if (name == "-vu") cam.up = vec3(o);
-    else if (name == "-fov" || name == "-angle") cam.fov_degrees = number(o);
-    else if (name == "-radius") cam.lens_radius = number(o);
-    else if (name == "-focaldistance") cam.focal_distance = number(o);
-    else if (name == "-size") {
+    // The camera's values are checked one by one here; whether they make a camera together
+    // (-vi apart from -vp, -vu not along the view) is checked when the camera is made, and
+    // that error names the places recorded in given_at.
+    else if (name == "-vp")
+      given(o), cam.position = vec3(o);
+    else if (name == "-vi")
+      given(o), cam.look_at = vec3(o);
+    else if (name == "-vd") {
+      given(o, "-vi");
+      const Vec3f d = vec3(o);
+      if (!(length(d) > 0.0f)) fail(o.where, "-vd: the view direction is zero");
+      cam.look_at = cam.position + d;
+    } else if (name == "-vu") {
+      given(o);
+      cam.up = vec3(o);
+      if (!(length(cam.up) > 0.0f)) fail(o.where, "-vu: the up vector is zero");
+    } else if (name == "-fov" || name == "-angle") {
+      given(o, "-fov");
+      cam.fov_degrees = number(o);
+      if (!(cam.fov_degrees > 0.0f && cam.fov_degrees < 180.0f))
+        fail(o.where,
+             o.text + ": " + std::to_string(cam.fov_degrees) + " degrees is not between 0 and 180");
+    } else if (name == "-radius") {
+      given(o);
+      cam.lens_radius = number(o);
+      if (cam.lens_radius < 0.0f)
+        fail(o.where, "-radius: the lens radius must be 0 (a pinhole) or more");
+    } else if (name == "-focaldistance") {
+      given(o);
+      cam.focal_distance = number(o);
+      if (cam.focal_distance < 0.0f)
+        fail(o.where, "-focaldistance: must be 0 (the look-at distance) or more");
+    } else if (name == "-size") {
       s_.options.width = static_cast<int>(integer(o, 1, 1 << 15));
       s_.options.height = static_cast<int>(integer(o, 1, 1 << 15));
-    } else if (name == "-spp") s_.options.spp = static_cast<int>(integer(o, 1, 1 << 20));
+      if (uint64_t(s_.options.width) * uint64_t(s_.options.height) > kMaxRenderPixels)
+        fail(o.where, "-size: " + std::to_string(s_.options.width) + " x " +
+                          std::to_string(s_.options.height) + " is more than " +
+                          std::to_string(kMaxRenderPixels) + " pixels");
+    } else if (name == "-spp")
+      s_.options.spp = static_cast<int>(integer(o, 1, 1 << 20));
     else if (name == "-depth") s_.options.max_depth = static_cast<int>(integer(o, 0, 1 << 16));
     else if (name == "-seed") s_.options.seed = static_cast<uint32_t>(integer(o, 0, 0xFFFFFFFFll));
     else if (name == "-threads") s_.options.threads = static_cast<int>(integer(o, 0, 1024));
     else if (name == "-gamma") {
       const float g = number(o);
-      if (!(g > 0.0f)) fail(o.where, "-gamma: must be above 0");
+      if (!(g > 0.0f && g <= 100.0f)) fail(o.where, "-gamma: must be above 0 and at most 100");
       s_.tone.gamma = g;
     } else if (name == "-renderer") renderer(o);
-    else if (name == "-accel") s_.accel.accel = take(o, "an acceleration structure").text;
-    else if (name == "-tri") s_.accel.tri = take(o, "a triangle layout").text;
+    else if (name == "-accel")
+      given(o), s_.accel.accel = take(o, "an acceleration structure").text;
+    else if (name == "-tri")
+      given(o), s_.accel.tri = take(o, "a triangle layout").text;
     else if (name == "-isa") {
       const Token& t = take(o, "an ISA name");
       const std::optional<Isa> isa = parse_isa(t.text);
-      if (!isa) fail(t.where, "-isa: unknown ISA '" + t.text + "' (scalar, sse4, avx2 or avx512)");
+      if (!isa)
+        fail(t.where,
+             "-isa: unknown ISA '" + scene_io::shown(t.text) + "' (scalar, sse4, avx2 or avx512)");
       s_.accel.isa = isa;
     } else if (name == "-kernels") {
       const Token& t = take(o, "kernels (rtk or embree)");
-      if (t.text != "rtk" && t.text != "embree") fail(t.where, "-kernels: unknown kernels '" + t.text + "' (rtk or embree)");
+      if (t.text != "rtk" && t.text != "embree")
+        fail(t.where,
+             "-kernels: unknown kernels '" + scene_io::shown(t.text) + "' (rtk or embree)");
       s_.kernels = t.text;
     } else if (name == "-sampler") {
       const Token& t = take(o, "a sampler name");
@@ -279,15 +355,28 @@ class ScriptReader {
       const float r = number(o);
       const int theta = static_cast<int>(integer(o, 2, 4096)), phi = static_cast<int>(integer(o, 3, 4096));
       if (!(r > 0.0f)) fail(o.where, "-trisphere: the radius must be above 0");
+      generated_ += 2ull * theta * phi;
+      if (generated_ > kMaxGeneratedTriangles)
+        fail(o.where, "-trisphere: the spheres of the scripts would make more than " +
+                          std::to_string(kMaxGeneratedTriangles) + " triangles");
       add_sphere(p, r, theta, phi);
-    } else if (name == "-o") s_.outputs.push_back(file(o));
-    else if (name == "-vignetting" || name == "-backplate" || name == "-refine") {
+    } else if (name == "-o") {
+      // An output that cannot be written is found now, before any rendering.
+      const Token& t = take(o, "a file name");
+      const std::filesystem::path path = dir_ / t.text;
+      try {
+        check_output_path(path);
+      } catch (const FileError& e) {
+        fail(t.where, std::string("-o: ") + e.what());
+      }
+      s_.outputs.push_back(path);
+    } else if (name == "-vignetting" || name == "-backplate" || name == "-refine") {
       take(o, "a value");
       warn(o.where, o.text + " is not modelled and is ignored");
     } else if (name == "-display" || name == "-fullscreen") {
       warn(o.where, o.text + ": the viewer is opened by running rtk without -o");
     } else {
-      fail(o.where, "unknown option '" + o.text + "'");
+      fail(o.where, "unknown option '" + scene_io::shown(o.text) + "'");
     }
   }
 
@@ -320,8 +409,17 @@ class ScriptReader {
       }
   }
 
+  // Records where an option was given (under `key`, or its own name), for the checks that
+  // can only be made once everything is read.
+  void given(const Token& option, std::string_view key = {}) {
+    std::string_view name = key.empty() ? std::string_view(option.text) : key;
+    if (name.starts_with("--")) name.remove_prefix(1);
+    s_.given_at[std::string(name)] = option.where;
+  }
+
   SceneScript& s_;
   const WarningHandler& warn_;
+  uint64_t generated_ = 0;
   int depth_;
   const std::vector<Token>* tokens_ = nullptr;
   std::filesystem::path dir_;
@@ -332,9 +430,14 @@ class ScriptReader {
 
 }  // namespace
 
-void read_script_file(const std::filesystem::path& path, SceneScript& script, const WarningHandler& warn) {
-  const std::string text = read_file(path);
+void read_script_file(const std::filesystem::path& path, SceneScript& script,
+                      const WarningHandler& warn) {
   script.files.push_back(path);
+  read_script_text(read_file(path, kMaxTextFileBytes), path, script, warn);
+}
+
+void read_script_text(std::string_view text, const std::filesystem::path& path, SceneScript& script,
+                      const WarningHandler& warn) {
   const std::vector<Token> tokens = tokenize(text, path.string());
   ScriptReader(script, warn, 0).run(tokens, path.parent_path());
 }

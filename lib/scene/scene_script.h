@@ -15,19 +15,31 @@
 /// FILE, -trisphere p r numTheta numPhi, -o FILE. -vignetting, -backplate, -display,
 /// -fullscreen and -refine are read and ignored with a warning. `#` starts a comment; files
 /// are named relative to the script that names them.
+///
+/// Every value is checked where it is read, so that its error names the file and line (or
+/// the command line's argument): numbers are finite and in their option's range (-fov
+/// between 0 and 180, -radius and -focaldistance not negative, -vu and -vd not zero, ...), an
+/// output file's folder exists and may be written (check_output_path). What can only be
+/// judged once everything is read (whether -vp, -vi and -vu make a camera; whether -accel and
+/// -tri suit the scene) is checked by the device, and SceneScript::given_at keeps where those
+/// options were given for its messages. Limits: scene/scene_limits.h.
 #pragma once
 
 #include <filesystem>
+#include <initializer_list>
+#include <map>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "09_kernel_api/accel.h"
 #include "11_materials/material.h"
 #include "13_pathtracer/render.h"
 #include "13_pathtracer/scene.h"
-#include "09_kernel_api/accel.h"
 #include "image/tonemap.h"
+#include "scene/parse_number.h"
 
 namespace rtk {
 
@@ -40,13 +52,53 @@ struct SceneScript {
   std::string kernels = "rtk";               ///< -kernels rtk|embree: who traces the rays
   std::vector<std::filesystem::path> outputs;  ///< every -o, in order
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
+  /// Where each option checked only after reading was last given, by name ("-vp", "-vi" (also
+  /// for -vd), "-vu", "-fov", "-radius", "-focaldistance", "-accel", "-tri").
+  std::map<std::string, scene_io::Where, std::less<>> given_at;
 };
+
+/// Runs `make` (a device commit of the script's camera or scene) and turns its
+/// std::invalid_argument into a FileError at the place where an option of `options` was
+/// given: the first that the message names (the message is then told from that name on), or
+/// else the first given, with the option's name in front: "view.ecs:3: -vi: camera: look-at
+/// point equals the camera position". When none of them was given (the defaults were refused) the
+/// error passes unchanged.
+template <class Make>
+auto at_given_place(const SceneScript& script, std::initializer_list<std::string_view> options,
+                    Make&& make) {
+  try {
+    return make();
+  } catch (const std::invalid_argument& e) {
+    const std::string_view message = e.what();
+    auto given = [&](bool named) -> const std::pair<const std::string, scene_io::Where>* {
+      for (std::string_view o : options)
+        if (auto it = script.given_at.find(o);
+            it != script.given_at.end() && (!named || message.find(o) != message.npos))
+          return &*it;
+      return nullptr;
+    };
+    const auto* place = given(true);
+    if (!place) place = given(false);
+    if (!place) throw;
+    // A message that names the option ("rtk device: scene #1: -accel: ...") is told from
+    // there on; another gets the option's name in front.
+    const size_t named = message.find(place->first + ":");
+    scene_io::fail(place->second, named != std::string_view::npos
+                                      ? std::string(message.substr(named))
+                                      : place->first + ": " + std::string(message));
+  }
+}
 
 /// Reads a command script into `script`. Throws FileError "FILE:LINE: message" for any
 /// error: an unknown option, a missing or malformed argument, an unbalanced { }, a file that
 /// cannot be read or parsed (then the message is that file's own), a script that includes
 /// itself. Warnings (ignored options, approximated materials) go to `warn`.
 void read_script_file(const std::filesystem::path& path, SceneScript& script,
+                      const WarningHandler& warn = {});
+
+/// Reads the text of a command script named `path` (files it names are relative to its
+/// folder): read_script_file without reading the script itself, for the fuzzer.
+void read_script_text(std::string_view text, const std::filesystem::path& path, SceneScript& script,
                       const WarningHandler& warn = {});
 
 /// Reads command-line arguments with the same rules; files are relative to the current

@@ -1,15 +1,14 @@
 #include "scene/xml_scene.h"
 
-#include <pugixml.hpp>
-
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <map>
 #include <numbers>
 #include <optional>
+#include <pugixml.hpp>
 #include <set>
-#include <sstream>
 
 #include "12_lights/area_light.h"
 #include "12_lights/distant_light.h"
@@ -20,6 +19,7 @@
 #include "io/read_file.h"
 #include "scene/obj_scene.h"
 #include "scene/parse_number.h"
+#include "scene/scene_limits.h"
 
 namespace rtk {
 
@@ -46,15 +46,29 @@ struct Affine {
   }
 };
 
+// What all the files of one scene share: the triangles made rather than read so far
+// (kMaxGeneratedTriangles).
+struct SceneBudget {
+  uint64_t generated = 0;
+};
+
 // One XML file being read: the document, the line table for messages, the side file of
 // binary arrays (read when first needed) and the reused definitions.
 class XmlReader {
  public:
-  XmlReader(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn, int depth)
-      : path_(path), file_(path.string()), scene_(scene), warn_(warn), depth_(depth) {}
+  XmlReader(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn,
+            int include_depth, SceneBudget& budget)
+      : path_(path),
+        file_(path.string()),
+        scene_(scene),
+        warn_(warn),
+        include_depth_(include_depth),
+        budget_(budget) {}
 
-  void run() {
-    text_ = read_file(path_);
+  void run() { run(read_file(path_)); }
+
+  void run(std::string text) {
+    text_ = std::move(text);
     // Line starts, so that pugixml's byte offsets become line numbers.
     line_starts_.push_back(0);
     for (size_t i = 0; i < text_.size(); ++i)
@@ -67,6 +81,12 @@ class XmlReader {
   }
 
  private:
+  // A scene assigned to an id, and its place among the file's scene assignments.
+  struct Assigned {
+    pugi::xml_node node;
+    size_t order;  // the how-manieth scene assignment of the file
+  };
+
   size_t line_of(ptrdiff_t offset) const {
     if (offset < 0) return 0;
     return static_cast<size_t>(std::upper_bound(line_starts_.begin(), line_starts_.end(), size_t(offset)) -
@@ -83,6 +103,26 @@ class XmlReader {
     const pugi::xml_node c = n.child(name);
     if (!c) fail(n, std::string("<") + n.name() + "> needs a <" + name + ">");
     return c;
+  }
+  // A file this one names, reported at the line that names it when it cannot be read or is
+  // not valid as a whole (its own errors at its own lines pass unchanged).
+  template <class Body>
+  auto referenced(const pugi::xml_node& n, const std::string& what, Body&& body) {
+    try {
+      return body();
+    } catch (const FileError& e) {
+      if (e.line() != 0) throw;
+      fail(n, what + ": " + e.what());
+    }
+  }
+  // Counts the triangles a reference or a sphere is about to make against the scene's budget.
+  void generate(const pugi::xml_node& n, uint64_t triangles) {
+    if (budget_.generated + triangles > kMaxGeneratedTriangles)
+      fail(n, "<" + std::string(n.name()) + ">: the scene would make more than " +
+                  std::to_string(kMaxGeneratedTriangles) +
+                  " triangles by references and spheres (" + std::to_string(budget_.generated) +
+                  " so far)");
+    budget_.generated += triangles;
   }
 
   // ---- Values -------------------------------------------------------------------------
@@ -128,13 +168,16 @@ class XmlReader {
   std::vector<T> array(const pugi::xml_node& n, int width) const {
     std::vector<T> out;
     if (n.attribute("ofs") || n.attribute("size")) {
-      const long long ofs = n.attribute("ofs").as_llong(-1), size = n.attribute("size").as_llong(-1);
-      if (ofs < 0 || size < 0) fail(n, std::string("<") + n.name() + ">: ofs and size must both be given and not negative");
+      const long long ofs = attribute_int(n, "ofs"), size = attribute_int(n, "size");
       const std::string& bin = side_file(n);
-      const unsigned long long bytes = static_cast<unsigned long long>(size) * width * 4;
-      if (static_cast<unsigned long long>(ofs) > bin.size() || bytes > bin.size() - ofs)
-        fail(n, std::string("<") + n.name() + ">: bytes " + std::to_string(ofs) + " + " + std::to_string(bytes) +
+      // Checked by division: size * width * 4 may not fit in 64 bits.
+      const uint64_t record = static_cast<uint64_t>(width) * 4;
+      if (static_cast<uint64_t>(ofs) > bin.size() ||
+          static_cast<uint64_t>(size) > (bin.size() - ofs) / record)
+        fail(n, std::string("<") + n.name() + ">: " + std::to_string(size) + " elements of " +
+                    std::to_string(record) + " bytes from byte " + std::to_string(ofs) +
                     " lie outside the binary file (" + std::to_string(bin.size()) + " bytes)");
+      const uint64_t bytes = static_cast<uint64_t>(size) * record;
       out.resize(static_cast<size_t>(size) * width);
       if (bytes > 0) std::memcpy(out.data(), bin.data() + ofs, bytes);  // little-endian, as the machine
       if constexpr (std::is_same_v<T, float>)
@@ -151,14 +194,27 @@ class XmlReader {
     return out;
   }
 
+  // An attribute that must be a whole number, not negative: ofs and size of binary arrays.
+  long long attribute_int(const pugi::xml_node& n, const char* name) const {
+    const pugi::xml_attribute a = n.attribute(name);
+    if (!a) fail(n, std::string("<") + n.name() + ">: ofs and size must both be given");
+    return scene_io::parse_int(a.value(), where(n), std::string("<") + n.name() + " " + name + ">",
+                               0, LLONG_MAX);
+  }
+
   const std::string& side_file(const pugi::xml_node& n) const {
     if (!bin_) {
       std::filesystem::path a = path_, b = path_;
       a.replace_extension(".bin");
       b += ".bin";
-      if (std::filesystem::is_regular_file(a)) bin_ = read_file(a);
-      else if (std::filesystem::is_regular_file(b)) bin_ = read_file(b);
-      else fail(n, "binary array but no side file (" + a.string() + " or " + b.string() + ")");
+      const std::filesystem::path& bin = std::filesystem::is_regular_file(a) ? a : b;
+      if (!std::filesystem::is_regular_file(bin))
+        fail(n, "binary array but no side file (" + a.string() + " or " + b.string() + ")");
+      try {
+        bin_ = read_file(bin);
+      } catch (const FileError& e) {
+        fail(n, std::string("binary array: ") + e.what());
+      }
     }
     return *bin_;
   }
@@ -170,7 +226,21 @@ class XmlReader {
       if (n.type() == pugi::node_element) node(n, xfm);
   }
 
+  // [ch13-xml-depth]
+  // The reader descends the scene graph recursively, one call per level of elements and per
+  // <ref> followed: the depth is bounded so that a file nested 12,000 deep is an error at the
+  // element that goes too deep, not a stack overflow.
   void node(const pugi::xml_node& n, const Affine& xfm) {
+    if (depth_ >= kMaxXmlDepth)
+      fail(n, "<" + scene_io::shown(n.name()) + ">: elements and references nested more than " +
+                  std::to_string(kMaxXmlDepth) + " deep");
+    ++depth_;
+    visit(n, xfm);
+    --depth_;
+  }
+  // [ch13-xml-depth]
+
+  void visit(const pugi::xml_node& n, const Affine& xfm) {
     const std::string name = n.name();
     if (name == "Group") children(n, xfm);
     else if (name == "Transform") transform(n, xfm);
@@ -186,7 +256,7 @@ class XmlReader {
       camera_warned_ = true;
     } else if (!skipped_.count(name)) {
       skipped_.insert(name);
-      warn(n, "<" + name + "> is not supported and is skipped");
+      warn(n, "<" + scene_io::shown(name) + "> is not supported and is skipped");
     }
   }
 
@@ -194,17 +264,73 @@ class XmlReader {
   // loaders resolve references as they parse, so a file may reassign an id to a scene that
   // refers to the id's previous meaning (cornell_box_4 made of four copies of cornell_box_4).
   // Resolving only earlier assignments also means that references can never form a cycle.
-  void ref(const pugi::xml_node& n, const Affine& xfm) {
+  // The assignment a <ref> names: the latest one of its id before the current scope.
+  const Assigned& target_of(const pugi::xml_node& n) const {
     const std::string id = n.attribute("id").as_string();
     const Assigned* target = nullptr;
     if (auto it = scenes_.find(id); it != scenes_.end())
       for (const Assigned& a : it->second)
         if (a.order < scope_) target = &a;
-    if (!target) fail(n, "<ref>: no scene assigned with id '" + id + "' before this point");
+    if (!target)
+      fail(n, "<ref>: no scene assigned with id '" + scene_io::shown(id) + "' before this point");
+    return *target;
+  }
+
+  // [ch13-xml-budget]
+  // Every triangle a reference adds is a copy, counted against the budget before the copy is
+  // made: the triangles an assigned scene holds are counted once, without reading it, so that
+  // 3.6 KB of references that double at every level are refused at the first <ref>, before
+  // anything is allocated.
+  void ref(const pugi::xml_node& n, const Affine& xfm) {
+    const Assigned& target = target_of(n);
+    const uint64_t copies = triangles_in(target, depth_);
+    if (budget_.generated + copies > kMaxGeneratedTriangles) generate(n, copies);
     const size_t outer = scope_;
-    scope_ = target->order;
-    node(target->node, xfm);
+    scope_ = target.order;
+    ++in_reference_;
+    node(target.node, xfm);
+    --in_reference_;
     scope_ = outer;
+  }
+  // [ch13-xml-budget]
+
+  // The triangles reading `n` would add, counted without reading it (included files count
+  // for nothing here; they are charged once read). The count descends as the reading would,
+  // and so has the same depth limit.
+  uint64_t count_triangles(const pugi::xml_node& n, int depth) {
+    if (depth >= kMaxXmlDepth)
+      fail(n, "<" + scene_io::shown(n.name()) + ">: elements and references nested more than " +
+                  std::to_string(kMaxXmlDepth) + " deep");
+    const std::string_view name = n.name();
+    if (name == "TriangleMesh") {
+      const pugi::xml_node t = n.child("triangles");
+      if (t.attribute("size")) return static_cast<uint64_t>(attribute_int(t, "size"));
+      return tokens(t).size() / 3;
+    }
+    if (name == "Sphere") {
+      const uint64_t theta = integer(require(n, "numTheta"), 2, 4096),
+                     phi = integer(require(n, "numPhi"), 3, 4096);
+      return 2 * theta * phi;
+    }
+    if (name == "ref") {
+      const Assigned& target = target_of(n);
+      const size_t outer = scope_;
+      scope_ = target.order;
+      const uint64_t count = triangles_in(target, depth + 1);
+      scope_ = outer;
+      return count;
+    }
+    uint64_t sum = 0;
+    if (name == "Group" || name == "Transform")
+      for (pugi::xml_node c : n.children())
+        if (c.type() == pugi::node_element)
+          sum = std::min(sum + count_triangles(c, depth + 1), uint64_t(1) << 62);
+    return sum;
+  }
+  // The triangles of an assigned scene, counted once.
+  uint64_t triangles_in(const Assigned& target, int depth) {
+    if (const auto it = counted_.find(target.order); it != counted_.end()) return it->second;
+    return counted_[target.order] = count_triangles(target.node, depth);
   }
 
   void transform(const pugi::xml_node& n, const Affine& xfm) {
@@ -217,12 +343,29 @@ class XmlReader {
 
   Affine affine(const pugi::xml_node& n) const {
     Affine a;
-    auto attr3 = [&](const char* name) {
-      std::istringstream in(n.attribute(name).as_string());
-      Vec3f v;
-      if (!(in >> v.x >> v.y >> v.z)) fail(n, std::string("<AffineSpace ") + name + ">: needs three numbers");
+    // Attribute values are read as strictly as element text: "abc" is not 0, "1 2 3 junk" is
+    // not (1, 2, 3).
+    auto attr_numbers = [&](const char* name, size_t count) {
+      std::vector<float> v;
+      const std::string what = std::string("<AffineSpace ") + name + ">";
+      std::string_view text = n.attribute(name).as_string();
+      while (!text.empty()) {
+        const size_t start = text.find_first_not_of(" \t\r\n");
+        if (start == std::string_view::npos) break;
+        const size_t end = std::min(text.find_first_of(" \t\r\n", start), text.size());
+        v.push_back(scene_io::parse_float(text.substr(start, end - start), where(n), what));
+        text.remove_prefix(end);
+      }
+      if (v.size() != count)
+        fail(n, what + ": needs " + std::to_string(count) + " number" + (count > 1 ? "s" : "") +
+                    ", has " + std::to_string(v.size()));
       return v;
     };
+    auto attr3 = [&](const char* name) {
+      const auto v = attr_numbers(name, 3);
+      return Vec3f{v[0], v[1], v[2]};
+    };
+    auto attr1 = [&](const char* name) { return attr_numbers(name, 1)[0]; };
     constexpr float deg = std::numbers::pi_v<float> / 180.0f;
     auto rotation = [&](Vec3f axis, float degrees) {
       const float len = std::sqrt(dot(axis, axis));
@@ -236,10 +379,14 @@ class XmlReader {
     else if (n.attribute("scale")) {
       const Vec3f s = attr3("scale");
       a.c0 = {s.x, 0, 0}, a.c1 = {0, s.y, 0}, a.c2 = {0, 0, s.z};
-    } else if (n.attribute("rotate_x")) a = rotation({1, 0, 0}, n.attribute("rotate_x").as_float());
-    else if (n.attribute("rotate_y")) a = rotation({0, 1, 0}, n.attribute("rotate_y").as_float());
-    else if (n.attribute("rotate_z")) a = rotation({0, 0, 1}, n.attribute("rotate_z").as_float());
-    else if (n.attribute("rotate")) a = rotation(attr3("axis"), n.attribute("rotate").as_float());
+    } else if (n.attribute("rotate_x"))
+      a = rotation({1, 0, 0}, attr1("rotate_x"));
+    else if (n.attribute("rotate_y"))
+      a = rotation({0, 1, 0}, attr1("rotate_y"));
+    else if (n.attribute("rotate_z"))
+      a = rotation({0, 0, 1}, attr1("rotate_z"));
+    else if (n.attribute("rotate"))
+      a = rotation(attr3("axis"), attr1("rotate"));
     else {
       const auto m = numbers(n, 12);
       a.c0 = {m[0], m[4], m[8]}, a.c1 = {m[1], m[5], m[9]}, a.c2 = {m[2], m[6], m[10]}, a.p = {m[3], m[7], m[11]};
@@ -256,13 +403,14 @@ class XmlReader {
     const std::string id = m.attribute("id").as_string();
     if (!m.first_child() && !id.empty()) {
       auto it = materials_.find(id);
-      if (it == materials_.end()) fail(m, "<material id=\"" + id + "\">: no material assigned with that id");
+      if (it == materials_.end())
+        fail(m, "<material id=\"" + scene_io::shown(id) + "\">: no material assigned with that id");
       return it->second;
     }
     if (m.attribute("file")) {
       const std::filesystem::path p = path_.parent_path() / m.attribute("file").as_string();
       pugi::xml_document doc;
-      const std::string text = read_file(p);
+      const std::string text = referenced(m, "<material file>", [&] { return read_file(p); });
       const pugi::xml_parse_result r = doc.load_buffer(text.data(), text.size());
       if (!r) fail(m, "<material file>: " + p.string() + ": malformed XML: " + r.description());
       const pugi::xml_node inner = doc.child("material");
@@ -367,6 +515,14 @@ class XmlReader {
     std::vector<Vec3f> p(nv), p1, normals;
     std::vector<Vec2f> uvs;
     for (size_t i = 0; i < nv; ++i) p[i] = xfm.point({pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]});
+    // Finite numbers can overflow through a transform (1e30 scaled by 1e30).
+    auto check_finite = [&](const std::vector<Vec3f>& points, const pugi::xml_node& at) {
+      for (size_t i = 0; i < points.size(); ++i)
+        if (!is_finite(points[i]))
+          fail(at, std::string("<") + at.name() + ">: vertex " + std::to_string(i) +
+                       " is not finite after the transforms");
+    };
+    check_finite(p, n.child("positions"));
     auto per_vertex = [&](const pugi::xml_node& c, size_t count) {
       if (count != 0 && count != nv)
         fail(c, std::string("<") + c.name() + ">: " + std::to_string(count) + " entries for " + std::to_string(nv) + " positions");
@@ -376,6 +532,7 @@ class XmlReader {
       const auto d = array<float>(m, 3);
       if (per_vertex(m, d.size() / 3))
         for (size_t i = 0; i < nv; ++i) p1.push_back(p[i] + xfm.vector({d[3 * i], d[3 * i + 1], d[3 * i + 2]}));
+      check_finite(p1, m);
     }
     if (pugi::xml_node m = n.child("normals")) {
       const auto d = array<float>(m, 3);
@@ -397,14 +554,19 @@ class XmlReader {
                        " is out of range (" + std::to_string(nv) + " positions)");
       tris.push_back({uint32_t(idx[i]), uint32_t(idx[i + 1]), uint32_t(idx[i + 2])});
     }
+    if (in_reference_) generate(n, tris.size());
     append(p, p1, normals, uvs, tris, material(n));
   }
 
   void sphere(const pugi::xml_node& n, const Affine& xfm) {
+    const Vec3f centre = vec3(require(n, "position"));
+    const float radius = number(require(n, "radius"));
+    const int theta = integer(require(n, "numTheta"), 2, 4096),
+              phi = integer(require(n, "numPhi"), 3, 4096);
+    generate(n, 2ull * theta * phi);
     SphereMesh s;
     try {
-      s = tessellate_sphere(vec3(require(n, "position")), number(require(n, "radius")),
-                            integer(require(n, "numTheta"), 2, 4096), integer(require(n, "numPhi"), 3, 4096));
+      s = tessellate_sphere(centre, radius, theta, phi);
     } catch (const std::invalid_argument& e) {
       fail(n, std::string("<Sphere>: ") + e.what());
     }
@@ -415,6 +577,9 @@ class XmlReader {
       const Vec3f d = xfm.vector(vec3(m));
       for (const Vec3f& v : s.vertices) p1.push_back(v + d);
     }
+    for (const auto& points : {s.vertices, p1})
+      for (const Vec3f& v : points)
+        if (!is_finite(v)) fail(n, "<Sphere>: a vertex is not finite after the transforms");
     append(s.vertices, p1, s.normals, {}, s.triangles, material(n));
   }
 
@@ -448,8 +613,22 @@ class XmlReader {
         }
       } else {  // HDRILight: the map's x, z, y axes along the space's columns
         const std::filesystem::path file = path_.parent_path() / quoted(require(n, "image"));
-        const Frame frame(normalize(space.c0), normalize(space.c2), normalize(space.c1));
-        scene_.add_light(std::make_shared<EnvironmentLight>(load_environment_image(file.string()), color("L"), frame));
+        // The columns must make a frame: none zero (a zero scale would make NaN light), each
+        // at right angles to the others (a shear has no orientation to give the map).
+        const Vec3f x = space.c0, y = space.c1, z = space.c2;
+        const float lx = length(x), ly = length(y), lz = length(z);
+        if (!(lx > 0 && ly > 0 && lz > 0) || !std::isfinite(lx * ly * lz) ||
+            std::fabs(dot(x, y)) > 1e-4f * lx * ly || std::fabs(dot(y, z)) > 1e-4f * ly * lz ||
+            std::fabs(dot(z, x)) > 1e-4f * lz * lx)
+          fail(n,
+               "<HDRILight>: its AffineSpace must be a rotation (and scale), with no zero or "
+               "sheared axis");
+        const Frame frame(x / lx, z / lz, y / ly);
+        const Color scale = color("L");
+        scene_.add_light(std::make_shared<EnvironmentLight>(
+            referenced(n, "<HDRILight> image",
+                       [&] { return load_environment_image(file.string()); }),
+            scale, frame));
       }
     } catch (const FileError&) {
       throw;
@@ -463,19 +642,25 @@ class XmlReader {
   void include(const pugi::xml_node& n, const Affine& xfm) {
     const std::string src = n.attribute("src").as_string();
     if (src.empty()) fail(n, std::string("<") + n.name() + ">: needs a src attribute");
+    const size_t triangles_before = scene_.mesh.triangles.size();
     const std::filesystem::path p = path_.parent_path() / src;
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     const size_t first = scene_.mesh.vertices.size();
     const size_t lights_before = scene_.lights.size();
+    const std::string what = std::string("<") + n.name() + " src=\"" + scene_io::shown(src) + "\">";
     if (ext == ".xml") {
-      if (depth_ >= 16) fail(n, "<xml>: files nested more than 16 deep (does '" + src + "' include itself?)");
-      XmlReader(p, scene_, warn_, depth_ + 1).run();
+      if (include_depth_ + 1 >= kMaxXmlIncludeDepth)
+        fail(n, what + ": files nested more than " + std::to_string(kMaxXmlIncludeDepth) +
+                    " deep (does it include itself?)");
+      referenced(n, what, [&] { XmlReader(p, scene_, warn_, include_depth_ + 1, budget_).run(); });
     } else if (ext == ".obj") {
-      load_obj_scene(p, scene_, warn_);
+      referenced(n, what, [&] { load_obj_scene(p, scene_, warn_); });
     } else {
-      fail(n, std::string("<") + n.name() + ">: unknown file type '" + src + "' (.xml, .obj)");
+      fail(n, what + ": unknown file type (.xml, .obj)");
     }
+    // A file included inside a reference is one more copy.
+    if (in_reference_) generate(n, scene_.mesh.triangles.size() - triangles_before);
     // The included file's own coordinates go through this node's transform.
     if (!xfm.is_identity()) {
       for (size_t i = first; i < scene_.mesh.vertices.size(); ++i) scene_.mesh.vertices[i] = xfm.point(scene_.mesh.vertices[i]);
@@ -489,16 +674,16 @@ class XmlReader {
   std::string file_;
   RenderScene& scene_;
   const WarningHandler& warn_;
-  int depth_;
+  int include_depth_;
+  SceneBudget& budget_;
+  int depth_ = 0;                       // elements and references being read, one inside the other
+  int in_reference_ = 0;                // references being expanded, one inside the other
+  std::map<size_t, uint64_t> counted_;  // the triangles of each assignment, once counted
   std::string text_;
   std::vector<size_t> line_starts_;
   pugi::xml_document doc_;
   mutable std::optional<std::string> bin_;
   std::map<std::string, uint32_t> materials_;
-  struct Assigned {
-    pugi::xml_node node;
-    size_t order;  // the how-manieth scene assignment of the file
-  };
   std::map<std::string, std::vector<Assigned>> scenes_;  // every assignment of each id, in order
   size_t assignments_ = 0;
   size_t scope_ = SIZE_MAX;  // references see the assignments made before this one
@@ -511,7 +696,13 @@ class XmlReader {
 }  // namespace
 
 void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn) {
-  XmlReader(path, scene, warn, 0).run();
+  read_xml_scene_text(read_file(path), path, scene, warn);
+}
+
+void read_xml_scene_text(std::string_view text, const std::filesystem::path& path,
+                         RenderScene& scene, const WarningHandler& warn) {
+  SceneBudget budget;
+  XmlReader(path, scene, warn, 0, budget).run(std::string(text));
   // An OBJ file included after a moving mesh added vertices without a time-1 position: they
   // stand still.
   if (scene.has_motion() && scene.vertices_t1.size() < scene.mesh.vertices.size())

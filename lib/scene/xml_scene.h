@@ -15,9 +15,16 @@
 /// from the side file (`scene.bin`, then `scene.xml.bin`). The 2.x cameras are ignored with a
 /// warning (the script's -vp and friends place the camera), other unknown elements are skipped
 /// with a warning.
+///
+/// Every number (element text and attributes alike) is read strictly, finite, and every vertex
+/// is checked finite after its transforms. Limits (scene/scene_limits.h): elements and `<ref>`s
+/// nested at most kMaxXmlDepth deep, XML files included at most kMaxXmlIncludeDepth deep, at
+/// most kMaxGeneratedTriangles triangles made by references and spheres; a binary array must
+/// lie inside its side file, which is checked before anything is allocated.
 #pragma once
 
 #include <filesystem>
+#include <string_view>
 
 #include "11_materials/material.h"
 #include "13_pathtracer/scene.h"
@@ -29,5 +36,10 @@ namespace rtk {
 /// range, a binary array outside its side file, or a file that cannot be read; warnings go to
 /// `warn`.
 void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn = {});
+
+/// load_xml_scene on the text of the file named `path` (the files it names are relative to
+/// its folder), for the fuzzer.
+void read_xml_scene_text(std::string_view text, const std::filesystem::path& path,
+                         RenderScene& scene, const WarningHandler& warn = {});
 
 }  // namespace rtk
