@@ -8,9 +8,11 @@
 #include "01_base/timer.h"
 #include "commands.h"
 #include "io/obj_loader.h"
+#include "io/read_file.h"
 #include "io/replay_files.h"
 #include "json_line.h"
 #include "options.h"
+#include "output_checks.h"
 #include "replay/ray_generator.h"
 
 namespace rtk::cli {
@@ -24,9 +26,11 @@ int run_rays(std::span<const std::string_view> args) {
     throw options.error("option -kind: unknown kind '" + kind_name +
                         "' (expected primary, diffuse, shadow or random)");
   options.required("n");
-  const uint64_t count = options.get_count("n", 0, 1, std::numeric_limits<uint32_t>::max());
+  // No more rays than a .rays file that read_file can read back (kMaxFileBytes, 4 GiB).
+  const uint64_t count = options.get_count("n", 0, 1, (kMaxFileBytes - 16) / sizeof(Ray));
   const uint64_t seed = options.get_count("seed", 1, 0, std::numeric_limits<uint64_t>::max());
   const std::string output = options.required("o");
+  check_output_option("o", output);
 
   const TriangleMesh mesh = load_obj(scene);
   Timer timer;

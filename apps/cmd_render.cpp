@@ -10,7 +10,9 @@
 #include "commands.h"
 #include "device_objects.h"
 #include "image/image_io.h"
+#include "interrupt.h"
 #include "options.h"
+#include "output_checks.h"
 #include "render_kernels/choose_kernels.h"
 #include "scene/scene_script.h"
 #include "viewer.h"
@@ -30,6 +32,8 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
     throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm); "
                      "`rtk -c SCENE.ecs` or `rtk view` without -o opens the interactive viewer");
   if (viewer.frames > 0) throw UsageError("-frames and -screenshot belong to the viewer (no -o)");
+  // Every -o was checked where it was read (its folder exists and may be written); its format
+  // is checked here, before any work.
   for (const auto& out : script.outputs) {
     try {
       image_format_from_path(out.string());
@@ -49,18 +53,32 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   // motion structure only if it moves).
   Device device([](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); },
                 kernel_factory(script.kernels));
-  const Handle scene = commit_scene(device, script, options.threads);
+  // What the device refuses names the place where the option was given (-accel, -tri, and
+  // the camera's -vp, -vi, -vu, ...).
+  const Handle scene = at_given_place(
+      script, {"-accel", "-tri"}, [&] { return commit_scene(device, script, options.threads); });
   std::printf("scene: %zu triangles, %zu materials, %zu lights%s\n", script.scene.mesh.size(),
               script.scene.materials.size(), script.scene.lights.size(),
               script.scene.has_motion() ? ", moving" : "");
   std::printf("kernels: %s\n", device.kernels_summary(scene).c_str());
-  std::fflush(stdout);
+  flush_stdout();
 
   // Step 3: the camera, the renderer and the framebuffer as device objects, and the frame.
-  const Handle camera = commit_camera(device, script.scene.camera);
+  const Handle camera =
+      at_given_place(script, {"-vi", "-vp", "-vu", "-fov", "-radius", "-focaldistance"},
+                     [&] { return commit_camera(device, script.scene.camera); });
   const Handle renderer = commit_renderer(device, options);
   const Handle framebuffer = commit_framebuffer(device, options.width, options.height);
-  const RenderStats stats = device.render_frame(renderer, camera, scene, framebuffer);
+  // SIGINT or SIGTERM from here on stops the render at the next tile (chapter 13), and what
+  // was rendered is written.
+  const Interrupt interrupt;
+  const RenderStats stats =
+      device.render_frame(renderer, camera, scene, framebuffer, interrupt.flag());
+  if (stats.stopped())
+    std::fprintf(stderr,
+                 "rtk render: interrupted by %s: %llu of %llu tiles rendered; writing them\n",
+                 interrupt.signal_name(), static_cast<unsigned long long>(stats.tiles_done),
+                 static_cast<unsigned long long>(stats.tiles));
   std::printf("render: %dx%d, %d spp, depth %d, %d threads, seed %u: %.3f s, %.3g samples/s, "
               "%.3g Mrays/s, %.0f%% of thread time in ray queries\n",
               options.width, options.height, options.spp, options.max_depth, options.threads,
@@ -73,7 +91,7 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
     device.write_image(framebuffer, out.string(), script.tone);
     std::printf("wrote %s\n", out.string().c_str());
   }
-  return 0;
+  return stats.stopped() ? interrupt.exit_status() : 0;
 }
 
 }  // namespace rtk::cli

@@ -14,6 +14,7 @@
 #include "io/replay_files.h"
 #include "json_line.h"
 #include "options.h"
+#include "output_checks.h"
 
 namespace rtk::cli {
 
@@ -46,6 +47,7 @@ int run_trace(std::span<const std::string_view> args) {
     throw options.error(want_hits ? "options -hits and -occl exclude each other"
                                   : "missing option -hits or -occl (what to write)");
   const std::string output = want_hits ? options.required("hits") : options.required("occl");
+  check_output_option(want_hits ? "hits" : "occl", output);
   AccelConfig config;
   config.accel = options.get("accel", "");
   config.tri = options.get("tri", "");

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <type_traits>
 
+#include "output_checks.h"
+
 namespace rtk::cli {
 
 /// Builds `{"key":value,...}` in the order the fields are added.
@@ -68,10 +70,12 @@ class JsonLine {
   /// The object's text, without a line end.
   std::string str() const { return text_.empty() ? "{}" : text_ + "}"; }
   /// Prints the object and a line end on stdout, flushed (a pipe sees each line at once).
+  /// Throws std::runtime_error when it cannot be written (`rtk trace > /dev/full`): results
+  /// that were not delivered are an error, never a silent exit 0.
   void print() const {
     std::fputs(str().c_str(), stdout);
     std::fputc('\n', stdout);
-    std::fflush(stdout);
+    flush_stdout();
   }
 
  private:

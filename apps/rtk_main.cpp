@@ -2,12 +2,14 @@
 // here, one line on stderr that names the command and the option or file, and exit status 2.
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "commands.h"
 #include "options.h"
+#include "output_checks.h"
 
 namespace {
 
@@ -26,7 +28,8 @@ constexpr const char* kUsage =
     "          (default 0), 1 when more do. Hits agree with the same primID and\n"
     "          |t1 - t2| <= T max(|t|, 1), or T max(|t|, |org|/|dir|) given the rays\n"
     "          (default T 1e-4); -show lists the first N differing rays (default 10)\n"
-    "  render  [-c SCENE.ecs] [-size W H] [-spp N] [-depth N] [-seed N] [-threads N] [-accel SPEC]\n"
+    "  render  [-c SCENE.ecs] [-size W H] [-spp N] [-depth N] [-seed N] [-threads N] [-accel "
+    "SPEC]\n"
     "          [-tri SPEC] [-isa NAME] [-kernels rtk|embree] [any option of the guide's scripts]\n"
     "          -o IMAGE.png|tga|ppm|hdr|pfm\n"
     "          render with the path tracer, on RTK's kernels or (-kernels embree) on Embree's;\n"
@@ -36,7 +39,8 @@ constexpr const char* kUsage =
     "          dollies; c prints the camera; -frames N closes it after N frames,\n"
     "          -screenshot then saves the window\n"
     "  help    this text\n"
-    "exit status: 0 success, 1 compare found differences, 2 error (message on stderr)\n";
+    "exit status: 0 success, 1 compare found differences, 2 error (message on stderr),\n"
+    "  130 or 143 a render stopped by SIGINT or SIGTERM (the image so far is written)\n";
 
 }  // namespace
 
@@ -49,22 +53,33 @@ int main(int argc, char** argv) {
   const std::string command(args.front());
   const std::span<const std::string_view> rest(args.data() + 1, args.size() - 1);
   try {
-    if (command == "info") return rtk::cli::run_info(rest);
-    if (command == "rays") return rtk::cli::run_rays(rest);
-    if (command == "trace") return rtk::cli::run_trace(rest);
-    if (command == "compare") return rtk::cli::run_compare(rest);
-    if (command == "render") return rtk::cli::run_render(rest);
-    if (command == "view") return rtk::cli::run_render(rest, true);
-    // The guide's short form: options without a command render (rtk -c scene.ecs -o out.png).
-    if (command.size() > 1 && command[0] == '-' && command != "-h" && command != "-help" &&
-        command != "--help")
-      return rtk::cli::run_render(args, true);
-    if (command == "help" || command == "-h" || command == "-help" || command == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    std::fprintf(stderr, "rtk: unknown command '%s'\n%s", command.c_str(), kUsage);
-    return rtk::cli::kExitError;
+    // Standard output carries results: a closed one is found before any work is done, and a
+    // write that fails at the end (a full disk) is an error too.
+    rtk::cli::check_stdout();
+    const int status = [&] {
+      if (command == "info") return rtk::cli::run_info(rest);
+      if (command == "rays") return rtk::cli::run_rays(rest);
+      if (command == "trace") return rtk::cli::run_trace(rest);
+      if (command == "compare") return rtk::cli::run_compare(rest);
+      if (command == "render") return rtk::cli::run_render(rest);
+      if (command == "view") return rtk::cli::run_render(rest, true);
+      // The guide's short form: options without a command render (rtk -c scene.ecs -o out.png).
+      if (command.size() > 1 && command[0] == '-' && command != "-h" && command != "-help" &&
+          command != "--help")
+        return rtk::cli::run_render(args, true);
+      if (command == "help" || command == "-h" || command == "-help" || command == "--help") {
+        std::fputs(kUsage, stdout);
+        return 0;
+      }
+      std::fprintf(stderr, "rtk: unknown command '%s'\n%s", command.c_str(), kUsage);
+      return rtk::cli::kExitError;
+    }();
+    rtk::cli::flush_stdout();
+    return status;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr,
+                 "rtk %s: out of memory: the inputs or options ask for more memory than there is\n",
+                 command.c_str());
   } catch (const rtk::cli::UsageError& e) {
     std::fprintf(stderr, "rtk %s: %s (see 'rtk help')\n", command.c_str(), e.what());
   } catch (const std::exception& e) {

@@ -21,6 +21,7 @@
 #include "15_viewer/orbit_camera.h"
 #include "device_objects.h"
 #include "image/image_io.h"
+#include "interrupt.h"
 #include "options.h"
 #include "render_kernels/choose_kernels.h"
 
@@ -260,7 +261,11 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Device device([](const std::string& w) { std::fprintf(stderr, "rtk view: warning: %s\n", w.c_str()); },
                 kernel_factory(script.kernels));
-  const Handle scene = commit_scene(device, script, options.threads);
+  const Handle scene = at_given_place(
+      script, {"-accel", "-tri"}, [&] { return commit_scene(device, script, options.threads); });
+  at_given_place(script, {"-vi", "-vp", "-vu", "-fov", "-radius", "-focaldistance"}, [&] {
+    return commit_camera(device, script.scene.camera);
+  });  // checked before the window opens
   const Handle renderer = commit_renderer(device, options);
   const std::shared_ptr<const RayKernels> kernels = device.kernels(scene);  // for picking
   std::printf("scene: %zu triangles; kernels: %s\n", script.scene.mesh.size(), device.kernels_summary(scene).c_str());
@@ -300,13 +305,16 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   int frames = 0;
   double frame_seconds = 0, render_seconds = 0;
   using clock = std::chrono::steady_clock;
-  while (!glfwWindowShouldClose(window)) {
+  // SIGINT or SIGTERM closes the window as its close button does: the frame under way stops at
+  // its next tile, and the loop ends.
+  const Interrupt interrupt;
+  while (!glfwWindowShouldClose(window) && !interrupt.requested()) {
     const auto start = clock::now();
     glfwPollEvents();
     int width = 0, height = 0;
     glfwGetFramebufferSize(window, &width, &height);
-    if (width < 1 || height < 1) {  // minimised: nothing to draw
-      glfwWaitEvents();
+    if (width < 1 || height < 1) {  // minimised: nothing to draw (waking now and then for a signal)
+      glfwWaitEventsTimeout(0.1);
       continue;
     }
     // [ch15-frame]
@@ -326,7 +334,8 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
       spp = 0;
     }
     state.moved = false;
-    const RenderStats stats = device.render_samples(renderer, camera, scene, framebuffer, spp, 1);
+    const RenderStats stats =
+        device.render_samples(renderer, camera, scene, framebuffer, spp, 1, interrupt.flag());
     ++spp;
     tonemap_rgb8(device.read_image(framebuffer), script.tone, rgb);
     // [ch15-frame]
@@ -351,6 +360,11 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
                 render_seconds / frames * 1e3, spp);
   glDeleteTextures(1, &texture);
   glfwDestroyWindow(window);
+  if (interrupt.requested()) {
+    std::fprintf(stderr, "rtk view: interrupted by %s; the window is closed\n",
+                 interrupt.signal_name());
+    return interrupt.exit_status();
+  }
   return 0;
 }
 
