@@ -55,8 +55,9 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
                 kernel_factory(script.kernels));
   // What the device refuses names the place where the option was given (-accel, -tri, and
   // the camera's -vp, -vi, -vu, ...).
-  const Handle scene = at_given_place(
-      script, {"-accel", "-tri"}, [&] { return commit_scene(device, script, options.threads); });
+  const Handle scene = at_given_place(script, {"-kernels", "-isa", "-accel", "-tri"}, [&] {
+    return commit_scene(device, script, options.threads);
+  });
   std::printf("scene: %zu triangles, %zu materials, %zu lights%s\n", script.scene.mesh.size(),
               script.scene.materials.size(), script.scene.lights.size(),
               script.scene.has_motion() ? ", moving" : "");

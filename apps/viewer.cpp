@@ -261,8 +261,9 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   if (options.threads == 0) options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Device device([](const std::string& w) { std::fprintf(stderr, "rtk view: warning: %s\n", w.c_str()); },
                 kernel_factory(script.kernels));
-  const Handle scene = at_given_place(
-      script, {"-accel", "-tri"}, [&] { return commit_scene(device, script, options.threads); });
+  const Handle scene = at_given_place(script, {"-kernels", "-isa", "-accel", "-tri"}, [&] {
+    return commit_scene(device, script, options.threads);
+  });
   at_given_place(script, {"-vi", "-vp", "-vu", "-fov", "-radius", "-focaldistance"}, [&] {
     return commit_camera(device, script.scene.camera);
   });  // checked before the window opens

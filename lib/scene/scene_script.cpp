@@ -300,6 +300,7 @@ class ScriptReader {
     else if (name == "-tri")
       given(o), s_.accel.tri = take(o, "a triangle layout").text;
     else if (name == "-isa") {
+      given(o);  // whether the CPU runs it is known when the scene is built
       const Token& t = take(o, "an ISA name");
       const std::optional<Isa> isa = parse_isa(t.text);
       if (!isa)
@@ -307,6 +308,7 @@ class ScriptReader {
              "-isa: unknown ISA '" + scene_io::shown(t.text) + "' (scalar, sse4, avx2 or avx512)");
       s_.accel.isa = isa;
     } else if (name == "-kernels") {
+      given(o);  // whether Embree is there, and takes the other options, too
       const Token& t = take(o, "kernels (rtk or embree)");
       if (t.text != "rtk" && t.text != "embree")
         fail(t.where,

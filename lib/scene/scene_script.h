@@ -53,7 +53,7 @@ struct SceneScript {
   std::vector<std::filesystem::path> outputs;  ///< every -o, in order
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
   /// Where each option checked only after reading was last given, by name ("-vp", "-vi" (also
-  /// for -vd), "-vu", "-fov", "-radius", "-focaldistance", "-accel", "-tri").
+  /// for -vd), "-vu", "-fov", "-radius", "-focaldistance", "-accel", "-tri", "-isa", "-kernels").
   std::map<std::string, scene_io::Where, std::less<>> given_at;
 };
 

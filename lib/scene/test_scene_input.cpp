@@ -170,7 +170,9 @@ TEST_CASE("lib_scene: every value of a script is checked for range where it is r
 TEST_CASE("lib_scene: options checked after reading carry the place where they were given") {
   Scratch s;
   rtk::SceneScript script;
-  CHECK(script_error(s, "-vp 1 1 1\n\n-vd 0 0 1\n-accel bvh9\n", &script).what.empty());
+  CHECK(
+      script_error(s, "-vp 1 1 1\n\n-vd 0 0 1\n-accel bvh9\n-isa avx512 -kernels embree\n", &script)
+          .what.empty());
   REQUIRE(script.given_at.count("-vi"));  // -vd moves the point of interest
   CHECK(script.given_at.at("-vi").line == 3);
   CHECK(script.given_at.at("-accel").line == 4);
@@ -188,6 +190,11 @@ TEST_CASE("lib_scene: options checked after reading carry the place where they w
             "t.ecs:4: -accel: 'bvh9'"));
   CHECK(has(fail_with("camera: look-at point equals the camera position", {"-vi", "-vp"}),
             "t.ecs:3: -vi: camera:"));
+  CHECK(has(fail_with("-isa: this CPU cannot run 'avx512'", {"-kernels", "-isa", "-accel"}),
+            "t.ecs:5: -isa: this CPU"));
+  CHECK(has(fail_with("-kernels embree: -accel, -tri and -isa choose RTK's structures",
+                      {"-kernels", "-isa", "-accel"}),
+            "t.ecs:5: -kernels: -kernels embree:"));
   CHECK_THROWS_AS(
       rtk::at_given_place(script, {"-tri"}, []() -> int { throw std::invalid_argument("x"); }),
       std::invalid_argument);  // never given: the error passes unchanged
