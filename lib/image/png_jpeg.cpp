@@ -79,20 +79,25 @@ void jpeg_count_scans(j_common_ptr info) {
 
 }  // namespace
 
-DecodedImage decode_png(std::string_view bytes, const std::string& name) {
+// libpng's simplified reader, released on every way out (the fuzzer found a dimension check
+// that threw past a png_image_free).
+struct PngReader {
   png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  auto error = [&](const char* stage) {
-    const std::string message = std::string(stage) + png.message;
-    png_image_free(&png);
-    fail(name, message);
-  };
+  PngReader() { png.version = PNG_IMAGE_VERSION; }
+  ~PngReader() { png_image_free(&png); }
+  PngReader(const PngReader&) = delete;
+  PngReader& operator=(const PngReader&) = delete;
+};
+
+DecodedImage decode_png(std::string_view bytes, const std::string& name) {
   // libpng stops reading after the last pixel; a file cut after it (its IEND chunk missing)
   // is still a truncated file.
   if (bytes.find(std::string_view("\0\0\0\0IEND\xae\x42\x60\x82", 12)) == std::string_view::npos)
     fail(name, "truncated: the PNG file has no IEND chunk");
+  PngReader reader;
+  png_image& png = reader.png;
   if (!png_image_begin_read_from_memory(&png, bytes.data(), bytes.size()))
-    error("not a valid PNG file: ");
+    fail(name, std::string("not a valid PNG file: ") + png.message);
   check_dimensions(name, png.width, png.height);
   check_expansion(name, png.width, png.height, bytes.size());
   // 8-bit RGB out; 16-bit files without colour-space chunks are taken as sRGB, as 8-bit ones.
@@ -100,8 +105,7 @@ DecodedImage decode_png(std::string_view bytes, const std::string& name) {
   png.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
   std::vector<unsigned char> rgb(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, rgb.data(), 0, nullptr))
-    error("corrupt or truncated PNG data: ");
-  png_image_free(&png);
+    fail(name, std::string("corrupt or truncated PNG data: ") + png.message);
   return from_rgb8(rgb, static_cast<int>(png.width), static_cast<int>(png.height), 3);
 }
 

@@ -16,8 +16,9 @@ seconds=${FUZZ_SECONDS:-60}
 build_dir=${FUZZ_BUILD_DIR:-build-fuzz}
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DRTK_FUZZ=ON -DRTK_BUILD_BENCH=OFF -DRTK_BUILD_BOOK=OFF >/dev/null
-cmake --build "$build_dir" -j"$(nproc)" --target fuzz_obj fuzz_replay
-for target in obj replay; do
+targets=(obj replay image mtl script xml)
+cmake --build "$build_dir" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
+for target in "${targets[@]}"; do
   corpus="$build_dir/corpus_$target"
   mkdir -p "$corpus"
   echo "fuzzing the $target reader for $seconds s"
