@@ -23,8 +23,10 @@ inline constexpr int kMaxXmlDepth = 256;
 /// The most triangles a scene may make rather than read: the copies that `<ref>` expands, the
 /// tessellations of `<Sphere>` and `-trisphere`. Checked before each expansion, so that a file
 /// of references that double at every level is refused before it has used the memory, and
-/// never holds more than this many generated triangles (about 100 bytes each).
-inline constexpr std::uint64_t kMaxGeneratedTriangles = std::uint64_t(1) << 22;
+/// never holds more than this many generated triangles: about 100 bytes each, and as much
+/// again in the acceleration structure (a million of them already take tens of seconds to
+/// build and render on two cores; 2^22 once ran for minutes from a 2 KB file).
+inline constexpr std::uint64_t kMaxGeneratedTriangles = std::uint64_t(1) << 20;
 
 /// The most pixels `-size W H` may ask for: 2^26 (8192 x 8192), about 2 GB of framebuffer and
 /// images (each side may be up to 32,768, as chapter 13's renderer allows).

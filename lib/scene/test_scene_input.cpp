@@ -237,7 +237,7 @@ TEST_CASE("lib_scene: references that double at every level stop at the triangle
             "\"/></Group></assign>\n";
   rtk::RenderScene scene;
   const Failure f = xml_error(s, xml(body + "<ref id=\"s40\"/>"), &scene);
-  CHECK(has(f.what, "would make more than 4194304 triangles"));
+  CHECK(has(f.what, "would make more than 1048576 triangles"));
   CHECK(scene.mesh.size() <= rtk::kMaxGeneratedTriangles);
   // A few copies are fine.
   rtk::RenderScene four;
