@@ -139,6 +139,15 @@ TEST_CASE("ch07: far from the origin, no structure loses a ray its intersector w
   MESSAGE(totals.rays << " rays from inside; leaks moeller " << totals.leaks[0] << ", pluecker "
                       << totals.leaks[1] << ", watertight " << totals.leaks[2]);
   CHECK(totals.leaks[int(IntersectorKind::watertight)] == 0);
+  // The intersectors' own leaks, pinned (measured 140 and 0 of 6,688): Möller-Trumbore decides
+  // the two sides of an edge from different vertices and edge vectors; the stable Plücker test
+  // is consistent per edge, and on these meshes few enough triangles meet at a vertex for its
+  // vertex leaks (test_leaks.cpp) not to show.
+  if (!test::kSanitizerBuild) {
+    CHECK(totals.leaks[int(IntersectorKind::moeller)] >= 100);
+    CHECK(totals.leaks[int(IntersectorKind::moeller)] <= 200);
+    CHECK(totals.leaks[int(IntersectorKind::pluecker)] <= 5);
+  }
 }
 // [ch07-test-far]
 
