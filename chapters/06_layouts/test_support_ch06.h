@@ -5,7 +5,6 @@
 
 #include <doctest/doctest.h>
 
-#include <bit>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -44,13 +43,6 @@ BuildTree<N> sah_tree(const TriangleMesh& mesh) {
   SahBuildOptions options;
   options.threads = 1;
   return build_binned_sah<N>(make_prim_refs(mesh), options);
-}
-
-/// Whether two hits are the same bits: t, u, v and primID.
-inline bool same_bits(const Hit& a, const Hit& b) {
-  return std::bit_cast<uint32_t>(a.t) == std::bit_cast<uint32_t>(b.t) &&
-         std::bit_cast<uint32_t>(a.u) == std::bit_cast<uint32_t>(b.u) &&
-         std::bit_cast<uint32_t>(a.v) == std::bit_cast<uint32_t>(b.v) && a.prim == b.prim;
 }
 
 /// Traces the scene's rays with `intersect(isa, rays, hits)` and `occluded(isa, rays, blocked)`

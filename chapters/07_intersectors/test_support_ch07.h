@@ -2,12 +2,12 @@
 // and width, and count what matters.
 #pragma once
 
-#include <bit>
 #include <span>
 #include <vector>
 
 #include "01_base/cpu_features.h"
 #include "07_intersectors/intersect_all.h"
+#include "testing/brute_force.h"  // same_bits
 
 namespace rtk::test {
 
@@ -17,13 +17,6 @@ inline std::vector<Hit> trace_all(const TriangleSoA& triangles, IntersectorKind 
   std::vector<Hit> hits(rays.size());
   RTK_PICK_ISA(isa, intersect_all)(triangles, kind, width, rays, hits);
   return hits;
-}
-
-/// Whether two hits are the same bit for bit.
-inline bool same_bits(const Hit& a, const Hit& b) {
-  return std::bit_cast<uint32_t>(a.t) == std::bit_cast<uint32_t>(b.t) &&
-         std::bit_cast<uint32_t>(a.u) == std::bit_cast<uint32_t>(b.u) &&
-         std::bit_cast<uint32_t>(a.v) == std::bit_cast<uint32_t>(b.v) && a.prim == b.prim;
 }
 
 }  // namespace rtk::test

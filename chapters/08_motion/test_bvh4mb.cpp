@@ -2,7 +2,6 @@
 // scalar variant, the static case against chapter 6's BVH4, the node boxes against the
 // triangles at many times, bad rays, and sparse against dense storage.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <set>
 #include <string>
@@ -18,7 +17,7 @@ using namespace rtk;
 
 namespace {
 
-bool same_bits(const Hit& a, const Hit& b) { return std::memcmp(&a, &b, sizeof(Hit)) == 0; }
+using test::same_bits;
 
 template <int N>
 std::vector<Hit> trace(Isa isa, const BVHMB<N>& bvh, const std::vector<Ray>& rays) {

@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <bit>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -46,12 +45,6 @@ TriangleMesh mixed_scene() {
   }
   test::add_degenerate_triangles(mesh, 20, 603);
   return mesh;
-}
-
-bool same_bits(const Hit& a, const Hit& b) {
-  return std::bit_cast<uint32_t>(a.t) == std::bit_cast<uint32_t>(b.t) &&
-         std::bit_cast<uint32_t>(a.u) == std::bit_cast<uint32_t>(b.u) &&
-         std::bit_cast<uint32_t>(a.v) == std::bit_cast<uint32_t>(b.v) && a.prim == b.prim;
 }
 
 }  // namespace
@@ -133,7 +126,7 @@ TEST_CASE("ch09: for one intersector, every structure, layout and ISA gives the 
         CAPTURE(it->second.config);
         int differ = 0;
         for (size_t i = 0; i < rays.size(); ++i)
-          differ += !same_bits(answer.hits[i], it->second.hits[i]) || answer.blocked[i] != it->second.blocked[i];
+          differ += !test::same_bits(answer.hits[i], it->second.hits[i]) || answer.blocked[i] != it->second.blocked[i];
         CHECK(differ == 0);
         ++compared;
       }

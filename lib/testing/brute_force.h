@@ -3,6 +3,7 @@
 /// in double precision.
 #pragma once
 
+#include <cstring>
 #include <span>
 #include <string>
 
@@ -18,6 +19,9 @@ Hit brute_force_intersect(const TriangleMesh& mesh, const Ray& ray);
 
 /// Whether any triangle blocks `ray` in [tnear, tfar].
 bool brute_force_occluded(const TriangleMesh& mesh, const Ray& ray);
+
+/// Whether two hits are the same bits: t, u, v and primID (a Hit is 16 bytes with no padding).
+inline bool same_bits(const Hit& a, const Hit& b) { return std::memcmp(&a, &b, sizeof(Hit)) == 0; }
 
 /// How far a kernel's answer may be from the oracle's and still agree with it.
 struct Tolerance {
