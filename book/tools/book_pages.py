@@ -1,0 +1,41 @@
+"""The book's pages in reading order, read from the source tree: used by the Doxygen input
+filter that writes each chapter's previous/next links."""
+import pathlib
+import re
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+HEADING = re.compile(r"^# (?P<title>.*?)\s*\{#(?P<anchor>[A-Za-z0-9_]+)\}\s*$")
+
+
+class Page:
+    """A page of the book: its file, its anchor (the HTML file's name) and its title."""
+
+    def __init__(self, path):
+        self.path = pathlib.Path(path)
+        first = self.path.read_text(encoding="utf-8").splitlines()[0]
+        m = HEADING.match(first)
+        if not m:
+            raise ValueError(f"{self.path}:1: the page must begin '# Title {{#anchor}}'")
+        self.title = m["title"]
+        self.anchor = m["anchor"]
+        self.number = None
+        folder = self.path.parent.name
+        if self.path.name == "chapter.md" and re.match(r"^\d\d_", folder):
+            self.number = int(folder[:2])
+
+    def __repr__(self):
+        return f"Page({self.anchor!r})"
+
+
+def chapters(root=ROOT):
+    """The chapters in reading order: chapters/NN_topic/chapter.md, sorted by folder."""
+    return [Page(p) for p in sorted((root / "chapters").glob("[0-9][0-9]_*/chapter.md"))]
+
+
+# The pages after the chapters, in the sidebar's order (book/CMakeLists.txt lists the same).
+EXTRA_PAGES = ["conventions.md", "embree_comparison.md"]
+
+
+def extra_pages(root=ROOT):
+    return [Page(root / "book" / name) for name in EXTRA_PAGES]
+
