@@ -33,7 +33,7 @@ def chapters(root=ROOT):
 
 
 # The pages after the chapters, in the sidebar's order (book/CMakeLists.txt lists the same).
-EXTRA_PAGES = ["conventions.md", "embree_comparison.md"]
+EXTRA_PAGES = ["reading.md", "measurement.md", "conventions.md", "embree_comparison.md"]
 
 
 def extra_pages(root=ROOT):
