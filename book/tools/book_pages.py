@@ -49,4 +49,6 @@ KNOWN_GAPS = {
     "code": ["ch04_sah", "ch07_intersectors", "ch13_pathtracer", "ch14_device"],
     "figures": ["ch01_base", "ch02_bvh2", "ch03_bvh4", "ch04_sah", "ch05_spatial", "ch06_layouts",
                 "ch09_kernel_api", "ch11_materials", "ch12_lights", "ch14_device"],
+    "references": ["index", "conventions", "embree_comparison", "ch01_base", "ch02_bvh2", "ch03_bvh4", "ch04_sah", "ch05_spatial", "ch06_layouts", "ch07_intersectors", "ch08_motion", "ch09_kernel_api", "ch10_sampling", "ch11_materials", "ch12_lights", "ch13_pathtracer", "ch14_device", "ch15_viewer"],
+    "openings": ["ch01_base", "ch02_bvh2", "ch03_bvh4", "ch04_sah", "ch05_spatial", "ch06_layouts", "ch07_intersectors", "ch08_motion", "ch09_kernel_api", "ch10_sampling", "ch11_materials", "ch12_lights", "ch13_pathtracer", "ch14_device", "ch15_viewer"],
 }

@@ -14,7 +14,9 @@ the standard library alone:
 - math: the pages that promise formulas (book_pages.MATH) show at least that many;
 - code: no typographic quote or dash inside inline code or code blocks, and no stray
   backtick in the prose (what Doxygen leaves of an inline code span holding a quote);
-- figures: every chapter shows at least one image or diagram.
+- figures: every chapter shows at least one image or diagram;
+- cross-references: every 'chapter N' in the prose of a page is a link (its own number aside),
+  and every chapter opens with what the reader will build.
 
 Each problem is printed as 'check: page: message'. book_pages.KNOWN_GAPS lists the problems
 the book still has, by check and page: they are reported but do not fail, and one that has
@@ -250,6 +252,28 @@ def check_figures(book, problems):
     return f"{count} figures"
 
 
+# --- cross-references and openings ------------------------------------------------------------
+
+def check_references(book, problems):
+    links = 0
+    for page in [None] + book.pages:
+        anchor = "index" if page is None else page.anchor
+        c = book.contents(anchor)
+        links += len(re.findall(r'<a class="el" href="ch\d\d_', c))
+        prose = CODE.sub("", c)
+        prose = re.sub(r"<a\b.*?</a>|<script\b.*?</script>|<h[1-6]\b.*?</h[1-6]>", "", prose, flags=re.S)
+        own = page.number if page is not None else None
+        for m in re.finditer(r"\b[Cc]hapter (\d{1,2})\b", strip_tags(prose)):
+            if int(m.group(1)) != own:
+                problems.append(("references", anchor, f"'{m.group(0)}' is not a link"))
+                break
+        if page is not None and page.number is not None:
+            head = c.split("<h2", 1)[0]
+            if not re.search(r"<blockquote[^>]*>\s*<p><b>What you will build</b>", head):
+                problems.append(("openings", anchor, "no '> **What you will build**: ...' before its first section"))
+    return f"{links} links to chapters"
+
+
 def main():
     if len(sys.argv) != 2:
         print(__doc__)
@@ -258,7 +282,8 @@ def main():
     start = time.monotonic()
     problems = []
     summary = []
-    for check in (check_links, check_navigation, check_snippets, check_math, check_code, check_figures):
+    for check in (check_links, check_navigation, check_snippets, check_math, check_code, check_figures,
+                  check_references):
         summary.append(check(book, problems))
     known = {(c, a) for c, anchors in book_pages.KNOWN_GAPS.items() for a in anchors}
     failed = 0
