@@ -269,7 +269,7 @@ def check_references(book, problems):
                 break
         if page is not None and page.number is not None:
             head = c.split("<h2", 1)[0]
-            if not re.search(r"<blockquote[^>]*>\s*<p><b>What you will build</b>", head):
+            if not re.search(r"<blockquote[^>]*>\s*<p\s*>(?:&zwj;)?\s*<b>What you will build</b>", head):
                 problems.append(("openings", anchor, "no '> **What you will build**: ...' before its first section"))
     return f"{links} links to chapters"
 

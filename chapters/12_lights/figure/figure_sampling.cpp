@@ -39,6 +39,17 @@ int main(int argc, char** argv) {
     return Vec3f{l.x, l.z, l.y};
   };
 
+  // The sun: the brightest direction of the map, on the grid the picture uses.
+  Vec3f sun{0, 1, 0};
+  float brightest = -1;
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 512; ++x) {
+      const Vec3f w = sky.direction({(static_cast<float>(x) + 0.5f) / 512.0f, (static_cast<float>(y) + 0.5f) / 256.0f});
+      if (const float l = luminance(sky.le(w)); l > brightest) brightest = l, sun = w;
+    }
+  const float near_sun = std::cos(3.0f * kPi / 180.0f);
+  int at_sun[2] = {0, 0};
+
   // The map, twice, with the samples of each way on it.
   constexpr int kW = 512, kH = 256, kGap = 12, kWidth = 2 * kW + 3 * kGap, kHeight = kH + 2 * kGap;
   std::vector<unsigned char> rgb(kWidth * kHeight * 3, 255);
@@ -53,7 +64,7 @@ int main(int argc, char** argv) {
     const int x0 = kGap + panel * (kW + kGap);
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
-        const Color l = sky.le(sky.direction({(x + 0.5f) / kW, (y + 0.5f) / kH}));
+        const Color l = sky.le(sky.direction({(static_cast<float>(x) + 0.5f) / kW, (static_cast<float>(y) + 0.5f) / kH}));
         put(x0 + x, kGap + y, Color(tone(l.r), tone(l.g), tone(l.b)));
       }
     Pcg32 rng(1, static_cast<uint64_t>(panel));
@@ -66,6 +77,7 @@ int main(int argc, char** argv) {
         if (!s) continue;
         w = s->wi;
       }
+      if (rtk::dot(w, sun) > near_sun) ++at_sun[panel];
       const Vec2f uv = sky.coordinates(w);
       const int px = x0 + static_cast<int>(uv.x * kW), py = kGap + static_cast<int>(uv.y * kH);
       for (int dy = -1; dy <= 1; ++dy)
@@ -76,6 +88,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: cannot write %s\n", argv[0], argv[2]);
     return 1;
   }
+
+  std::printf("within 3 degrees of the sun: %d of 1024 uniform directions, %d of 1024 importance samples\n",
+              at_sun[0], at_sun[1]);
 
   // How much a 16-sample estimate of the irradiance varies with each way.
   constexpr int kTrials = 2000, kSamples = 16;
