@@ -124,8 +124,8 @@ def occluder_table(rows):
     if not scenes:
         return
     print("\n**Occluder ordering** (BVH4 with rotations; visits = nodes and leaves a shadow ray enters "
-          "before its first hit when children are visited in stored order; Mrays/s of chapter 3's "
-          "occluded(), which visits nearest first):\n")
+          "before its first hit when children are visited in stored order, as \\ref ch03_bvh4 \"chapter 3\"'s occluded() "
+          "visits them; Mrays/s of that occluded()):\n")
     print("| scene | blocked | visits: off | largest_box | likely_blocker | nearest first | "
           "Mrays/s: off | largest_box | likely_blocker |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
