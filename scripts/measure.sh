@@ -95,6 +95,8 @@ section_ch03() { # BVH4/8/16: node width and ISA, children hit; then ch03_ablati
     --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
   made_by ch03 chapters/03_bvh4/ch03_widths.md
   python3 chapters/03_bvh4/bench_tables.py widths "$OUT/ch03_widths.json" >> chapters/03_bvh4/ch03_widths.md
+  made_by ch03 chapters/03_bvh4/ch03_hits.md
+  python3 chapters/03_bvh4/bench_tables.py hits "$OUT/ch03_widths.json" >> chapters/03_bvh4/ch03_hits.md
   run_section ch03_ablation
 }
 
@@ -200,12 +202,16 @@ section_ch10() { # sampling: the sample patterns figure; the samplers' speed
   build ch10_figure ch10_bench
   "$B/chapters/10_sampling/ch10_figure" chapters/10_sampling/ch10_points.png
   gbench ch10 "$B/chapters/10_sampling/ch10_bench"
+  made_by ch10 chapters/10_sampling/ch10_costs.md
+  python3 chapters/10_sampling/figure/bench_table.py "$OUT/ch10.json" >> chapters/10_sampling/ch10_costs.md
 }
 
 section_ch11() { # materials: the material gallery rendered by rtk; the BSDFs' speed
   build ch11_bench
   run_section ch11_gallery
-  gbench ch11 "$B/chapters/11_materials/ch11_bench"
+  gbench ch11 "$B/chapters/11_materials/ch11_bench" --benchmark_min_time=0.3
+  made_by ch11 chapters/11_materials/ch11_costs.md
+  python3 chapters/11_materials/figure/bench_table.py "$OUT/ch11.json" >> chapters/11_materials/ch11_costs.md
 }
 
 section_ch11_gallery() { # materials: the material gallery, seven spheres rendered by rtk
@@ -221,10 +227,10 @@ section_ch12() { # lights: uniform against importance-sampled directions on the 
 }
 
 section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch13_convergence
-  build rtk ch13_bench
+  build rtk bench_render
   "$B/apps/rtk" render -c scenes/cornell_box/cornell_box.ecs -spp 256 -o chapters/13_pathtracer/ch13_cornell_box.png \
     | tee "$OUT/ch13_render.txt"
-  RTK_SCENES=$SCENES gbench ch13 "$B/chapters/13_pathtracer/ch13_bench" --benchmark_min_time=1
+  RTK_SCENES=$SCENES gbench ch13 "$B/bench/bench_render" --benchmark_min_time=1
   run_section ch13_convergence
 }
 
@@ -247,6 +253,9 @@ section_ch15() { # viewer: the window's picture under Xvfb, and frame times at t
     xvfb-run -a -s "-screen 0 1024x768x24" "$B/apps/rtk" -c scenes/cornell_box/cornell_box.ecs \
       -size $s $s -frames 20 | tee "$OUT/ch15_frames_$s.txt"
   done
+  made_by ch15 chapters/15_viewer/ch15_frames.md
+  python3 chapters/15_viewer/figure/frames_table.py "$OUT/ch15_frames_512.txt" "$OUT/ch15_frames_128.txt" \
+    >> chapters/15_viewer/ch15_frames.md
 }
 
 section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then SSE4.2) and the renderer on both

@@ -16,7 +16,9 @@ the standard library alone:
   backtick in the prose (what Doxygen leaves of an inline code span holding a quote);
 - figures: every chapter shows at least one image or diagram;
 - cross-references: every 'chapter N' in the prose of a page is a link (its own number aside),
-  and every chapter opens with what the reader will build.
+  and every chapter opens with what the reader will build;
+- project, not machine: no page names a build folder of one machine (build-h1, ...), an
+  absolute path of one machine (/work/..., /tmp/...), or a load average.
 
 Each problem is printed as 'check: page: message'. book_pages.KNOWN_GAPS lists the problems
 the book still has, by check and page: they are reported but do not fail, and one that has
@@ -274,6 +276,24 @@ def check_references(book, problems):
     return f"{links} links to chapters"
 
 
+# --- project, not machine -----------------------------------------------------------------------
+
+MACHINE = re.compile(r"\bbuild-h\d|(?<![\w.])/(?:work|tmp|root|home)/|load average", re.I)
+
+
+def check_machine(book, problems):
+    for page in book.pages + [book_pages.Page(ROOT / "book" / "mainpage.md")]:
+        if page.anchor == "measurement":  # the page that names the machine, and its load
+            continue
+        for n, line in enumerate(page.path.read_text(encoding="utf-8").splitlines(), 1):
+            m = MACHINE.search(line)
+            if m:
+                anchor = "index" if page.anchor == "mainpage" else page.anchor
+                problems.append(("machine", anchor, f"{page.path.relative_to(ROOT)}:{n}: '{m.group(0)}'"))
+                break
+    return "machine-free pages"
+
+
 def main():
     if len(sys.argv) != 2:
         print(__doc__)
@@ -283,7 +303,7 @@ def main():
     problems = []
     summary = []
     for check in (check_links, check_navigation, check_snippets, check_math, check_code, check_figures,
-                  check_references):
+                  check_references, check_machine):
         summary.append(check(book, problems))
     known = {(c, a) for c, anchors in book_pages.KNOWN_GAPS.items() for a in anchors}
     failed = 0

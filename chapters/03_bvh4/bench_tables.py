@@ -3,7 +3,8 @@
 of chapters 2 and 3. Every ratio in a table comes from one run of one program.
 
   python3 chapters/03_bvh4/bench_tables.py isa    ch02.json   # BVH2: each ISA against scalar
-  python3 chapters/03_bvh4/bench_tables.py widths ch03.json   # BVH2/4/8/16 per ISA, statistics
+  python3 chapters/03_bvh4/bench_tables.py widths ch03.json   # BVH2/4/8/16 per ISA
+  python3 chapters/03_bvh4/bench_tables.py hits ch03.json     # nodes per ray, children hit
   python3 chapters/03_bvh4/bench_tables.py ablation ch03.json # each trick off against all on
 """
 import json
@@ -50,14 +51,11 @@ def isa_table(benchmarks):
 def widths_table(benchmarks):
     # bvhN/<scene>/<kind>/intersect/<isa>; the statistics are the same for every ISA (tested)
     rows = defaultdict(dict)
-    stats = defaultdict(dict)
     for b in benchmarks:
         parts = b["name"].split("/")
         if not parts[0].startswith("bvh") or parts[3] != "intersect":
             continue
         rows[(parts[1], parts[2])][f"{parts[0]}-{parts[4]}"] = rate(b)
-        if "nodes_per_ray" in b and parts[0] not in stats[(parts[1], parts[2])]:
-            stats[(parts[1], parts[2])][parts[0]] = b
     columns = ["bvh2-sse4", "bvh4-sse4", "bvh4-avx2", "bvh8-avx2", "bvh8-avx512", "bvh16-avx512"]
     print("| scene | rays | bvh4-scalar Mrays/s | " + " | ".join(columns) + " |")
     print("|---|---|---:|" + "---:|" * len(columns))
@@ -65,7 +63,17 @@ def widths_table(benchmarks):
         base = r.get("bvh4-scalar")
         cells = [f"{r[c] / base:.2f}" if c in r and base else "-" for c in columns]
         print(f"| {scene} | {kind} | {base:.2f} | " + " | ".join(cells) + " |")
-    print()
+
+
+def hits_table(benchmarks):
+    # The statistics of bvhN/<scene>/<kind>/intersect/<isa>, the same for every ISA (tested).
+    stats = defaultdict(dict)
+    for b in benchmarks:
+        parts = b["name"].split("/")
+        if not parts[0].startswith("bvh") or parts[3] != "intersect":
+            continue
+        if "nodes_per_ray" in b and parts[0] not in stats[(parts[1], parts[2])]:
+            stats[(parts[1], parts[2])][parts[0]] = b
     print("| scene | rays | BVH4 nodes/ray | BVH4 0-2 hit | BVH8 nodes/ray | BVH8 0-2 hit | BVH16 nodes/ray | BVH16 0-2 hit |")
     print("|---|---|---:|---:|---:|---:|---:|---:|")
     for (scene, kind), s in stats.items():
@@ -101,6 +109,7 @@ def ablation_table(benchmarks):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("isa", "widths", "ablation"):
+    tables = {"isa": isa_table, "widths": widths_table, "hits": hits_table, "ablation": ablation_table}
+    if len(sys.argv) != 3 or sys.argv[1] not in tables:
         sys.exit(__doc__)
-    {"isa": isa_table, "widths": widths_table, "ablation": ablation_table}[sys.argv[1]](load(sys.argv[2]))
+    tables[sys.argv[1]](load(sys.argv[2]))
