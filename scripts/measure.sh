@@ -172,11 +172,13 @@ section_ch06() { # layouts: bytes per triangle of every layout; then ch06_speed
   run_section ch06_speed
 }
 
-section_ch06_speed() { # layouts: Mrays/s of every layout and intersector per ISA; the bytes-against-speed chart
+section_ch06_speed() { # layouts: Mrays/s of every layout per ISA; the bytes-against-speed chart
   build ch06_bench
   gbench ch06_speed "$B/chapters/06_layouts/ch06_bench" \
     --benchmark_filter='layouts/sphere_130k/(diffuse|primary)/bvh4/.*/(scalar|sse4|avx512)' --benchmark_repetitions=5 \
     --benchmark_report_aggregates_only=true
+  made_by ch06_speed chapters/06_layouts/ch06_speed.md
+  python3 chapters/06_layouts/figure/speed_table.py "$OUT/ch06_speed.json" >> chapters/06_layouts/ch06_speed.md
   python3 chapters/06_layouts/figure/bytes_speed.py "$OUT/ch06_speed.json" chapters/06_layouts/ch06_bytes_speed.tsv
   plot chapters/06_layouts/figure/bytes_speed.gp chapters/06_layouts/ch06_bytes_speed
 }
@@ -249,9 +251,10 @@ section_ch15() { # viewer: the window's picture under Xvfb, and frame times at t
   build rtk
   xvfb-run -a -s "-screen 0 1024x768x24" "$B/apps/rtk" -c scenes/cornell_box/cornell_box.ecs \
     -size 256 256 -frames 64 -screenshot chapters/15_viewer/ch15_viewer.png
-  for s in 512 128; do
+  local size  # not s: run_section's name for the section
+  for size in 512 128; do
     xvfb-run -a -s "-screen 0 1024x768x24" "$B/apps/rtk" -c scenes/cornell_box/cornell_box.ecs \
-      -size $s $s -frames 20 | tee "$OUT/ch15_frames_$s.txt"
+      -size $size $size -frames 20 | tee "$OUT/ch15_frames_$size.txt"
   done
   made_by ch15 chapters/15_viewer/ch15_frames.md
   python3 chapters/15_viewer/figure/frames_table.py "$OUT/ch15_frames_512.txt" "$OUT/ch15_frames_128.txt" \

@@ -1,7 +1,7 @@
 # Chapter 5's chart: the duplication budget of the binned spatial splits against the references
 # per triangle it lets the builder make (left) and the diffuse rays' speed they buy, relative to
 # a 10 % budget (right), one line per scene. gnuplot -e "table='IN.tsv'; png='OUT.png'" budget.gp
-set terminal pngcairo size 1000,400 font "sans,11"
+set terminal pngcairo size 1000,400 font "sans,11" noenhanced
 set output png
 set datafile separator "\t"
 set grid

@@ -1,5 +1,5 @@
-"""Chapter 6's chart data: bytes per triangle against Mrays/s for every layout and intersector
-on the best ISA of the run, primary and diffuse rays, from `ch06_bench` JSON (medians when the
+"""Chapter 6's chart data: bytes per triangle against Mrays/s for every layout with
+Möller-Trumbore (chapter 7 compares the intersectors) on the best ISA of the run, primary and diffuse rays, from `ch06_bench` JSON (medians when the
 run repeated). Each row also carries where its label goes, nudged so that labels of nearby
 points do not overlap.
 
@@ -18,7 +18,7 @@ def main():
     points = {}
     for b in runs:
         parts = b["name"].split("/")  # layouts/<scene>/<kind>/bvh<N>/<layout.isect>/<isa>
-        if parts[0] != "layouts" or len(parts) < 6:
+        if parts[0] != "layouts" or len(parts) < 6 or not parts[4].endswith(".moeller"):
             continue
         points[(parts[2], parts[4], parts[5])] = (b["bytes/tri"], b["Mrays/s"])
     isa = next(i for i in ISAS if any(k[2] == i for k in points))
@@ -36,7 +36,7 @@ def main():
                 while any(abs(y - py) < 0.045 * span and abs(bytes_ - px) < 14 for px, py in placed):
                     y += 0.02 * span
                 placed.append((bytes_, y))
-                out.write(f"{kind}\t{layout}\t{bytes_:.1f}\t{mrays:.3f}\t{bytes_ + 1.2:.1f}\t{y:.3f}\n")
+                out.write(f"{kind}\t{layout.removesuffix('.moeller')}\t{bytes_:.1f}\t{mrays:.3f}\t{bytes_ + 1.2:.1f}\t{y:.3f}\n")
         out.write(f"# isa\t{isa}\n")
 
 
