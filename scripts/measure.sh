@@ -232,7 +232,11 @@ section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; t
   build rtk bench_render
   "$B/apps/rtk" render -c scenes/cornell_box/cornell_box.ecs -spp 256 -o chapters/13_pathtracer/ch13_cornell_box.png \
     | tee "$OUT/ch13_render.txt"
+  made_by ch13 chapters/13_pathtracer/ch13_picture.md
+  { echo '~~~'; grep '^render:' "$OUT/ch13_render.txt"; echo '~~~'; } >> chapters/13_pathtracer/ch13_picture.md
   RTK_SCENES=$SCENES gbench ch13 "$B/bench/bench_render" --benchmark_min_time=1
+  made_by ch13 chapters/13_pathtracer/ch13_render.md
+  python3 chapters/13_pathtracer/figure/bench_table.py "$OUT/ch13.json" >> chapters/13_pathtracer/ch13_render.md
   run_section ch13_convergence
 }
 
