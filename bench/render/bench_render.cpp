@@ -1,7 +1,7 @@
 // Chapter 13 benchmarks: the path tracer's throughput (camera samples and rays per second)
 // and the share of its time spent in the ray kernels, on the Cornell box with each ISA's
 // kernels, and on a real mesh (the Stanford bunny from $RTK_SCENES, skipped without it).
-// Run: RTK_SCENES=<shared/scenes> build/chapters/13_pathtracer/ch13_bench
+// Run: RTK_SCENES=<shared/scenes> build/bench/bench_render (bash scripts/measure.sh ch13)
 #include <benchmark/benchmark.h>
 
 #include "01_base/cpu_features.h"
