@@ -249,6 +249,8 @@ section_ch13_convergence() { # path tracer: error against samples per pixel for 
 section_ch14() { # device: a frame through the device against the renderer directly, and a commit
   build ch14_bench
   gbench ch14 "$B/chapters/14_device/ch14_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+  made_by ch14 chapters/14_device/ch14_costs.md
+  python3 chapters/14_device/figure/bench_table.py "$OUT/ch14.json" >> chapters/14_device/ch14_costs.md
 }
 
 section_ch15() { # viewer: the window's picture under Xvfb, and frame times at two sizes
