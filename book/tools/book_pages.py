@@ -54,6 +54,4 @@ MATH = {
 
 # Problems the book still has, by check and page: check_book.py reports them without failing,
 # and fails once one is fixed, until it is taken off this list.
-KNOWN_GAPS = {
-    "machine": ["ch13_pathtracer"],
-}
+KNOWN_GAPS = {}

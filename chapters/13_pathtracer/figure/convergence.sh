@@ -10,7 +10,7 @@ rtk=$1 work=$2 png=$3
 scene=$here/../../../scenes/cornell_box/cornell_box.ecs
 mkdir -p "$work"
 common=(-c "$scene" -size 128 128 -depth 8)
-[ -f "$work/reference.pfm" ] || "$rtk" render "${common[@]}" -spp 4096 -seed 99 -o "$work/reference.pfm"
+"$rtk" render "${common[@]}" -spp 4096 -seed 99 -o "$work/reference.pfm"
 table=${png%.png}.tsv
 for sampler in independent sobol; do
   for spp in 1 2 4 8 16 32 64 128 256; do
