@@ -1,7 +1,8 @@
 /// \file
 /// The renderer's colour: linear RGB radiance, reflectance or weight, three floats.
-/// It lives in chapter 10 because everything after it (BRDFs, lights, the framebuffer of
-/// lib/image) carries colours, and chapter 10 is the first chapter of the renderer.
+/// It lives in chapter 1, with the other value types, because the layer beneath the chapters
+/// (the framebuffer and image files of lib/image) carries colours as well as the renderer's
+/// chapters from 10 on.
 #pragma once
 
 #include <cmath>

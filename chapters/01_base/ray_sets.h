@@ -11,6 +11,7 @@
 
 namespace rtk::test {
 
+// [ch01-ray-sets]
 /// Rays from random points in a box enlarged by half its size toward random points inside the
 /// box, so that most hit something and some start inside the geometry.
 std::vector<Ray> random_rays(const Box3f& bounds, int count, uint64_t seed);
@@ -27,5 +28,6 @@ std::vector<Ray> invalid_rays();
 
 /// All of the above, with random finite [tnear, tfar] intervals on a quarter of them.
 std::vector<Ray> mixed_rays(const Box3f& bounds, int count, uint64_t seed);
+// [ch01-ray-sets]
 
 }  // namespace rtk::test
