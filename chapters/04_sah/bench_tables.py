@@ -1,8 +1,12 @@
 #!/usr/bin/env python3
-"""Turns the JSON output of ch04_bench into the Markdown tables of chapter 4.
+"""Turns the JSON output of ch04_bench into the Markdown tables of chapter 4, one table at a time,
+so that the page can place each next to the prose about it.
 
-    ch04_bench --benchmark_format=json > ch04.json
-    python3 chapters/04_sah/bench_tables.py ch04.json [more.json ...]
+    ch04_bench --benchmark_out=ch04.json --benchmark_out_format=json
+    python3 chapters/04_sah/bench_tables.py TABLE ch04.json [more.json ...]
+
+TABLE is one of: build (the 1M-triangle terrain), large (the larger terrains), threads, bins, real,
+real_bvh8, trace, costs, occluders.
 """
 import json
 import re
@@ -28,9 +32,11 @@ def fmt(x, digits=2):
     return f"{x:.{digits}f}"
 
 
-def build_tables(rows):
+def build_tables(rows, large=False):
     sizes = sorted({int(m.group(1)) for n in rows for m in [re.match(r"build/bvh\d+/median/tris:(\d+)/", n)] if m})
     for size in sizes:
+        if (size > 1000000) != large:
+            continue
         print(f"\n**Builds of a {size:,}-triangle terrain** (one thread; SAH priced with Ct = 1, Ci = 0.5; "
               "peak bytes allocated by the build, per triangle):\n")
         print("| tree | builder | Mtris/s | SAH | peak B/tri |")
@@ -79,7 +85,7 @@ def trace_table(rows):
             scenes.append(m.group(1))
     if not scenes:
         return
-    print("\n**Tracing through chapter 3's BVH4** (Mrays/s on one thread, best ISA, all tricks; "
+    print("\n**Tracing through \\ref ch03_bvh4 \"chapter 3\"'s BVH4** (Mrays/s on one thread, best ISA, all tricks; "
           "shadow rays use occluded()):\n")
     print("| scene | SAH median / binned | rays | median | binned | binned+rot | binned / median |")
     print("|---|---:|---|---:|---:|---:|---:|")
@@ -159,15 +165,44 @@ def real_table(rows):
               f"{fmt(med['sah'], 2)} | {fmt(b1['sah'], 2)} | {fmt(r1['sah'], 2)} |")
 
 
+def real_bvh8_table(rows):
+    scenes = []
+    for n in rows:
+        m = re.match(r"real/bvh8/([^/]+)/", n)
+        if m and m.group(1) not in scenes:
+            scenes.append(m.group(1))
+    if not scenes:
+        return
+    print("\n**The same for BVH8** (one thread):\n")
+    print("| mesh | Mtris/s: binned | binned+rot | rotations' share of the build | SAH: binned | binned+rot |")
+    print("|---|---:|---:|---:|---:|---:|")
+    for scene in scenes:
+        b1 = rows.get(f"real/bvh8/{scene}/binned/threads:1")
+        r1 = rows.get(f"real/bvh8/{scene}/binned+rot/threads:1")
+        if not (b1 and r1):
+            continue
+        share = 1 - r1["Mtris"] / b1["Mtris"]
+        print(f"| {scene} | {fmt(b1['Mtris'])} | {fmt(r1['Mtris'])} | {share * 100:.0f} % | "
+              f"{fmt(b1['sah'], 3)} | {fmt(r1['sah'], 3)} |")
+
+
+TABLES = {
+    "build": build_tables,
+    "large": lambda rows: build_tables(rows, large=True),
+    "threads": scaling_table,
+    "bins": bins_table,
+    "real": real_table,
+    "real_bvh8": real_bvh8_table,
+    "trace": trace_table,
+    "costs": costs_table,
+    "occluders": occluder_table,
+}
+
+
 def main():
-    rows = load(sys.argv[1:])
-    build_tables(rows)
-    scaling_table(rows)
-    bins_table(rows)
-    real_table(rows)
-    trace_table(rows)
-    costs_table(rows)
-    occluder_table(rows)
+    if len(sys.argv) < 3 or sys.argv[1] not in TABLES:
+        sys.exit(f"usage: bench_tables.py {{{'|'.join(TABLES)}}} RESULTS.json [MORE.json ...]")
+    TABLES[sys.argv[1]](load(sys.argv[2:]))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""The summaries of the Embree comparison page, from the JSON that make_table.sh and
+bench_render_kernels write (scripts/measure.sh embree runs all three):
+
+    python3 bench/embree/summary.py standing results.json results_sse4.json
+    python3 bench/embree/summary.py build results.json
+    python3 bench/embree/summary.py render embree_render.json
+
+`standing` gives, per RTK configuration and kind of ray, the range and median over the real
+meshes of RTK's speed as a ratio to Embree's in the same run; `build` the same for build speed
+and memory; `render` the renderer on both sets of kernels.
+"""
+import json
+import re
+import statistics
+import sys
+
+# The procedural scenes; every other scene of the run is a real mesh.
+PROCEDURAL = {"sphere", "soup", "terrain", "slivers"}
+ISA_NAMES = {"scalar": "scalar", "sse4": "SSE4", "avx2": "AVX2", "avx512": "AVX-512"}
+
+
+def benchmarks(path):
+    with open(path) as f:
+        data = json.load(f)
+    return data, [b for b in data["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+
+
+def spread(values, digits=2):
+    if not values:
+        return "–"
+    return f"{min(values):.{digits}f}-{max(values):.{digits}f}, median {statistics.median(values):.{digits}f}"
+
+
+def describe(tracer):
+    """rtk:avx512:bvh8.objectsplit:triangle8.moeller -> 'AVX-512, BVH8, triangle8' (+ spatial splits)."""
+    _, isa, accel, tri = tracer.split(":")
+    structure, split = accel.split(".")
+    text = f"{ISA_NAMES.get(isa, isa)}, {structure.upper()}, {tri.split('.')[0]}"
+    return text + (", spatial splits" if split == "spatialsplit" else "")
+
+
+def trace_ratios(path):
+    """{tracer: {kind: [ratios over the real meshes]}} and Embree's ISA, in the file's order."""
+    data, runs = benchmarks(path)
+    ratios = {}
+    for b in runs:
+        m = re.match(r"trace/([^/]+)/([^/]+)/(rtk:[^/]+)/", b["name"])
+        if m and m.group(1) not in PROCEDURAL:
+            ratios.setdefault(m.group(3), {}).setdefault(m.group(2), []).append(b["rtk_vs_embree"])
+    return ratios, data["context"].get("embree", "")
+
+
+def standing(paths):
+    print("| RTK's kernels | against Embree's | primary | diffuse | shadow |")
+    print("|---|---|---:|---:|---:|")
+    for n, path in enumerate(paths):
+        ratios, _ = trace_ratios(path)
+        against = "best ISA" if n == 0 else "SSE4.2 only"
+        for tracer, kinds in ratios.items():
+            cells = " | ".join(spread(kinds.get(k, [])) for k in ("primary", "diffuse", "shadow"))
+            print(f"| {describe(tracer)} | {against} | {cells} |")
+
+
+def build(path):
+    _, runs = benchmarks(path)
+    embree, rtk = {}, {}
+    for b in runs:
+        m = re.match(r"build/([^/]+)/([^/]+)/", b["name"])
+        if not m or m.group(1) in PROCEDURAL:
+            continue
+        if m.group(2) == "embree":
+            embree[m.group(1)] = b
+        else:
+            rtk.setdefault(m.group(2), {})[m.group(1)] = b
+    print("| RTK's structure | build speed / Embree's | RTK bytes/tri | Embree bytes/tri |")
+    print("|---|---:|---:|---:|")
+    for tracer, scenes in rtk.items():
+        if "spatialsplit" in tracer:
+            continue
+        speed = [b["Mtris_per_s"] / embree[s]["Mtris_per_s"] for s, b in scenes.items() if s in embree]
+        mine = [b["bytes_per_tri"] for b in scenes.values()]
+        theirs = [embree[s]["bytes_per_tri"] for s in scenes if s in embree]
+        _, accel, tri = tracer.split(":")
+        print(f"| {accel.split('.')[0].upper()}, {tri.split('.')[0]} | {spread(speed)} | "
+              f"{min(mine):.0f}-{max(mine):.0f} | {min(theirs):.0f}-{max(theirs):.0f} |")
+
+
+def render(path):
+    _, runs = benchmarks(path)
+    scenes = {"cornell": "Cornell box", "mesh:0": "Stanford bunny", "mesh:1": "Sponza"}
+    print("| scene | kernels | samples/s | Mrays/s | time in the kernels | kernels alone, Mrays/s |")
+    print("|---|---|---:|---:|---:|---:|")
+    for b in runs:
+        name = b["name"]
+        scene = next((v for k, v in scenes.items() if k in name), name.split("/")[0])
+        kernels = "Embree 3" if "kernels:1" in name else f"RTK ({b.get('label', '')})"
+        print(f"| {scene} | {kernels} | {b['items_per_second'] / 1e3:,.0f} k | {b['Mrays/s']:.2f} | "
+              f"{b['kernel_share'] * 100:.0f} % | {b['kernel_Mrays/s']:.2f} |")
+
+
+def main():
+    if len(sys.argv) >= 3 and sys.argv[1] == "standing":
+        standing(sys.argv[2:])
+    elif len(sys.argv) == 3 and sys.argv[1] in ("build", "render"):
+        {"build": build, "render": render}[sys.argv[1]](sys.argv[2])
+    else:
+        sys.exit("usage: summary.py standing RESULTS.json [SSE4.json] | build RESULTS.json | render RENDER.json")
+
+
+if __name__ == "__main__":
+    main()
