@@ -28,6 +28,16 @@ def load(paths):
     return rows
 
 
+def scenes_of(rows, prefix):
+    """The scenes of the benchmarks named PREFIX<scene>/..., in the order of the run."""
+    found = []
+    for n in rows:
+        m = re.match(re.escape(prefix) + r"([^/]+)/", n)
+        if m and m.group(1) not in found:
+            found.append(m.group(1))
+    return found
+
+
 def fmt(x, digits=2):
     return f"{x:.{digits}f}"
 
@@ -78,11 +88,7 @@ def bins_table(rows):
 
 
 def trace_table(rows):
-    scenes = []
-    for n in rows:
-        m = re.match(r"trace/([^/]+)/", n)
-        if m and m.group(1) not in scenes:
-            scenes.append(m.group(1))
+    scenes = scenes_of(rows, "trace/")
     if not scenes:
         return
     print("\n**Tracing through \\ref ch03_bvh4 \"chapter 3\"'s BVH4** (Mrays/s on one thread, best ISA, all tricks; "
@@ -122,11 +128,7 @@ def costs_table(rows):
 
 
 def occluder_table(rows):
-    scenes = []
-    for n in rows:
-        m = re.match(r"occluder/([^/]+)/", n)
-        if m and m.group(1) not in scenes:
-            scenes.append(m.group(1))
+    scenes = scenes_of(rows, "occluder/")
     if not scenes:
         return
     print("\n**Occluder ordering** (BVH4 with rotations; visits = nodes and leaves a shadow ray enters "
@@ -146,11 +148,7 @@ def occluder_table(rows):
 
 
 def real_table(rows):
-    scenes = []
-    for n in rows:
-        m = re.match(r"real/bvh4/([^/]+)/", n)
-        if m and m.group(1) not in scenes:
-            scenes.append(m.group(1))
+    scenes = scenes_of(rows, "real/bvh4/")
     if not scenes:
         return
     print("\n**Builds of real meshes** (BVH4, one thread):\n")
@@ -166,11 +164,7 @@ def real_table(rows):
 
 
 def real_bvh8_table(rows):
-    scenes = []
-    for n in rows:
-        m = re.match(r"real/bvh8/([^/]+)/", n)
-        if m and m.group(1) not in scenes:
-            scenes.append(m.group(1))
+    scenes = scenes_of(rows, "real/bvh8/")
     if not scenes:
         return
     print("\n**The same for BVH8** (one thread):\n")
