@@ -122,6 +122,7 @@ section_ch03_ablation() { # BVH4/8: each traversal trick off against all on; the
 section_ch04() { # SAH: build speed and quality, large scenes, threads, what the trees buy, costs; then ch04_bins and ch04_occluders
   build ch04_bench
   run_section ch04_bins
+  run_section ch04_growth
   run_section ch04_occluders
   RTK_SCENES=$SCENES gbench ch04 "$B/chapters/04_sah/ch04_bench" \
     --benchmark_filter='^(build/bvh[248]/[a-z+]+/tris:1000000/threads:1|trace/|costs/|real/.*threads:1)' \
@@ -144,6 +145,13 @@ section_ch04_occluders() { # SAH: the order of children for shadow rays, visits 
     --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
   table ch04_occluders chapters/04_sah/ch04_occluders.md \
     python3 chapters/04_sah/bench_tables.py occluders "$OUT/ch04_occluders.json"
+}
+
+section_ch04_growth() { # SAH: build time and peak memory per triangle at 1M, 4M and 16M triangles; the chart
+  build ch04_bench
+  RTK_BENCH_GROWTH=1 gbench ch04_growth "$B/chapters/04_sah/ch04_bench" --benchmark_filter='^growth/'
+  python3 chapters/04_sah/figure/growth_chart.py "$OUT/ch04_growth.json" chapters/04_sah/ch04_growth.tsv
+  plot chapters/04_sah/figure/growth.gp chapters/04_sah/ch04_growth
 }
 
 section_ch04_bins() { # SAH: bins per axis against build speed and SAH cost; the chart
@@ -322,7 +330,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch10 ch11 ch12 ch13 ch14 ch15 embree)
-PARTS=(ch02_tree ch03_ablation ch04_bins ch04_occluders ch05_budget ch06_speed ch11_gallery ch13_convergence)
+PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch11_gallery ch13_convergence)
 
 # --- the machine ------------------------------------------------------------------------------
 

@@ -7,11 +7,14 @@
 //   RTK_BENCH_LARGE=1 build-h3/chapters/04_sah/ch04_bench --benchmark_filter='tris:(4|16)'
 //                                                             # adds 4M and 16M triangles
 //   RTK_SCENES=/work/shared/scenes build-h3/chapters/04_sah/ch04_bench   # adds real meshes
+//   RTK_BENCH_GROWTH=1 build-h3/chapters/04_sah/ch04_bench --benchmark_filter='^growth/'
+//                                                             # BVH8 at 1M, 4M, 16M triangles
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <atomic>
 #include <cstdlib>
 #include <ctime>
@@ -389,6 +392,34 @@ void register_real_builds() {
   }
 }
 
+/// A sphere of about `triangles` triangles (r rings of 2r segments, 4 r^2 triangles), made once
+/// per size. Unlike the terrain, whose random bumps keep their height as its cells shrink, a
+/// finer sphere is the same surface: only the count changes.
+const std::vector<PrimRef>& sphere_refs(int triangles) {
+  static std::map<int, std::vector<PrimRef>> cache;
+  auto it = cache.find(triangles);
+  if (it == cache.end()) {
+    const int rings = int(std::lround(std::sqrt(double(triangles)) / 2));
+    it = cache.emplace(triangles, make_prim_refs(test::make_sphere(rings, 2 * rings))).first;
+  }
+  return it->second;
+}
+
+// [ch04-bench-growth]
+/// How build time and memory grow with the scene: the default builder (BVH8, rotations on)
+/// over spheres of 1M, 4M and 16M triangles, one and two threads. A top-down build makes about
+/// log n passes over the primitives, so time per triangle may grow like log n; the memory it
+/// holds per triangle should not grow at all. The time of the thread that builds alone is also
+/// counted as CPU time, which the load of a shared machine does not inflate.
+void register_growth() {
+  for (const int triangles : {1'000'000, 4'000'000, 16'000'000})
+    for (const int threads : {1, 2})
+      add_build("growth/bvh8/binned+rot/tris:" + std::to_string(triangles) + "/threads:" +
+                    std::to_string(threads),
+                &sphere_refs(triangles), 8, Builder::binned_rotations, threads);
+}
+// [ch04-bench-growth]
+
 const bool registered = [] {
   register_builds(100'000, true);
   register_builds(1'000'000, true);
@@ -402,6 +433,7 @@ const bool registered = [] {
               &terrain_refs(1'000'000), 4, Builder::binned, 1, bins);
   register_traces();
   register_real_builds();
+  if (std::getenv("RTK_BENCH_GROWTH")) register_growth();
   return true;
 }();
 

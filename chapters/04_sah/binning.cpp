@@ -1,5 +1,7 @@
 #include "04_sah/binning.h"
 
+#include <cmath>
+
 namespace rtk::sah {
 
 namespace {
@@ -41,48 +43,97 @@ Box3f bin_centroid_bounds(const Bins& bins, int axis, int first, int last) {
 
 uint32_t bin_count(const Bins& bins, int axis, int first, int last) {
   uint32_t count = 0;
-  for (int i = first; i < last; ++i) count += bins.count[axis][i];
+  for (int i = first; i < last; ++i) count += bins.count[i][axis];
   return count;
 }
 
 // [ch04-sweep]
 Split find_best_split(const Bins& bins, const BinMapping& map) {
   const int n = bins.num_bins;
-  Split best;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!map.splittable(axis)) continue;
-    const Bin* bin = bins.bin[axis];
-    const uint32_t* count = bins.count[axis];
-    // Sweep from the right: right_cost[i] prices bins [i, n) as one child, area times count.
-    double right_cost[kMaxSahBins];
-    Accumulator right;
-    uint32_t right_count = 0;
-    for (int i = n - 1; i > 0; --i) {
-      right.extend(bin[i].lower, bin[i].upper);
-      right_count += count[i];
-      right_cost[i] = right_count ? right.half_area() * right_count : -1.0;  // -1: nothing there
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  const Lanes4 pos_inf{inf, inf, inf, inf}, neg_inf = -pos_inf;
+  // The sweep runs in single precision, the three axes side by side in the lanes of one
+  // register. Float areas overflow past coordinates of about 1e19, so the coordinates are first
+  // scaled by a power of two that brings the largest to [0.5, 1): exact, and it leaves the
+  // order of the costs as it was. Every primitive is in one bin of axis 0, so those bins give
+  // the set's box.
+  Lanes4 lo = pos_inf, hi = neg_inf;
+  for (int i = 0; i < n; ++i) lo = min4(lo, bins.bin[0][i].lower), hi = max4(hi, bins.bin[0][i].upper);
+  float largest = 0.0f;
+  for (int a = 0; a < 3; ++a)
+    if (lo[a] <= hi[a]) largest = std::max({largest, std::fabs(lo[a]), std::fabs(hi[a])});
+  // Below 2^40 (the usual case) area times count stays far from overflow without scaling.
+  int exponent = 0;
+  if (!(largest < 0x1p40f)) std::frexp(largest, &exponent);
+  const float s = exponent == 0 ? 1.0f : std::ldexp(1.0f, -std::clamp(exponent, -125, 127));
+  // Half the areas of the three boxes [l[a], u[a]], one per lane, after scaling: each box's
+  // products dx dy, dy dz, dz dx side by side, then summed across by transposing.
+  auto areas = [s](const Lanes4 (&l)[3], const Lanes4 (&u)[3]) {
+    Lanes4 t[3];
+    for (int a = 0; a < 3; ++a) {
+      const Lanes4 d = s == 1.0f ? u[a] - l[a] : u[a] * s - l[a] * s;
+      t[a] = d * __builtin_shufflevector(d, d, 1, 2, 0, 3);  // lane 3: 0 * 0
     }
-    // Sweep from the left, pricing the border before each bin i.
-    Accumulator left;
-    uint32_t left_count = 0;
-    for (int i = 1; i < n; ++i) {
-      left.extend(bin[i - 1].lower, bin[i - 1].upper);
-      left_count += count[i - 1];
-      if (left_count == 0 || right_cost[i] < 0.0) continue;
-      const double cost = left.half_area() * left_count + right_cost[i];
-      if (cost < best.cost) {
-        best.axis = axis;
-        best.pos = i;
-        best.cost = cost;
-        best.left_count = left_count;
-      }
+    const Lanes4 zero{0, 0, 0, 0};
+    const Lanes4 ab = __builtin_shufflevector(t[0], t[1], 0, 4, 2, 6) +
+                      __builtin_shufflevector(t[0], t[1], 1, 5, 3, 7);
+    return (__builtin_shufflevector(ab, t[2], 0, 1, 4, 7) +
+            __builtin_shufflevector(ab, t[2], 2, 3, 5, 7)) +
+           __builtin_shufflevector(t[2], zero, 4, 4, 2, 4);
+  };
+  // Counts convert to float as signed integers (SSE2 has no unsigned conversion). A set of
+  // 2^31 primitives or more (64 GiB of references) would be priced wrongly, and get a poorer
+  // split, never a wrong tree: the chosen split's count and cost are exact below.
+  typedef uint32_t Counts4 __attribute__((vector_size(16)));
+  auto counts = [&](int i) {
+    Counts4 c;
+    std::memcpy(&c, bins.count[i], sizeof c);
+    return c;
+  };
+  const Counts4 none{0, 0, 0, 0};
+  // Sweep from the right: right_cost[i] prices bins [i, n) of each axis as one child, area
+  // times count (infinite where no primitive is there).
+  Lanes4 right_cost[kMaxSahBins];
+  {
+    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
+    Counts4 c = none;
+    for (int i = n - 1; i > 0; --i) {
+      for (int a = 0; a < 3; ++a) l[a] = min4(l[a], bins.bin[a][i].lower), u[a] = max4(u[a], bins.bin[a][i].upper);
+      c += counts(i);
+      const Lanes4 cost = areas(l, u) * __builtin_convertvector(reinterpret_cast<Ints4>(c), Lanes4);
+      right_cost[i] = c == none ? pos_inf : cost;
     }
   }
+  // Sweep from the left, pricing the border before each bin i, and keep the cheapest: the
+  // first one, lowest axis then lowest border, among equals.
+  Lanes4 cost[kMaxSahBins];
+  {
+    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
+    Counts4 c = none;
+    for (int i = 1; i < n; ++i) {
+      for (int a = 0; a < 3; ++a)
+        l[a] = min4(l[a], bins.bin[a][i - 1].lower), u[a] = max4(u[a], bins.bin[a][i - 1].upper);
+      c += counts(i - 1);
+      const Lanes4 total = areas(l, u) * __builtin_convertvector(reinterpret_cast<Ints4>(c), Lanes4) + right_cost[i];
+      cost[i] = c == none ? pos_inf : total;
+    }
+  }
+  Split best;
+  float best_cost = inf;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!map.splittable(axis)) continue;
+    for (int i = 1; i < n; ++i)
+      if (cost[i][axis] < best_cost) best_cost = cost[i][axis], best.axis = axis, best.pos = i;
+  }
   if (best.valid()) {
+    best.left_count = bin_count(bins, best.axis, 0, best.pos);
     best.left_bounds = bin_bounds(bins, best.axis, 0, best.pos);
     best.right_bounds = bin_bounds(bins, best.axis, best.pos, n);
     best.left_centroids = bin_centroid_bounds(bins, best.axis, 0, best.pos);
     best.right_centroids = bin_centroid_bounds(bins, best.axis, best.pos, n);
+    // The chosen split's price in double precision, as the leaf test compares it.
+    best.cost = half_area(best.left_bounds) * best.left_count +
+                half_area(best.right_bounds) * bin_count(bins, best.axis, best.pos, n);
   }
   return best;
 }

@@ -46,17 +46,32 @@ typedef float Lanes4 __attribute__((vector_size(16)));
 RTK_INLINE Lanes4 min4(Lanes4 a, Lanes4 b) { return a < b ? a : b; }
 RTK_INLINE Lanes4 max4(Lanes4 a, Lanes4 b) { return a > b ? a : b; }
 
+
 /// Four 32-bit integers, the bin indices of one centroid on the three axes.
 typedef int32_t Ints4 __attribute__((vector_size(16)));
 
 /// A primitive's box corners as lanes, with zero in lane 3 (the ID's bits there could be a
-/// denormal float, which arithmetic handles slowly).
+/// denormal float, which arithmetic handles slowly). Each is one aligned 16-byte load and a
+/// mask.
 RTK_INLINE Lanes4 lanes_lower(const PrimRef& r) {
-  return Lanes4{r.lower.x, r.lower.y, r.lower.z, 0.0f};
+  Ints4 bits;
+  std::memcpy(&bits, &r.lower, sizeof bits);  // lower.x, .y, .z and the ID
+  const Ints4 xyz{-1, -1, -1, 0};
+  return reinterpret_cast<Lanes4>(bits & xyz);
 }
 RTK_INLINE Lanes4 lanes_upper(const PrimRef& r) {
-  return Lanes4{r.upper.x, r.upper.y, r.upper.z, 0.0f};
+  Ints4 bits;
+  std::memcpy(&bits, &r.upper, sizeof bits);  // upper.x, .y, .z and the unused word
+  const Ints4 xyz{-1, -1, -1, 0};
+  return reinterpret_cast<Lanes4>(bits & xyz);
 }
+
+/// A primitive as the binning passes read it: its box corners and centroid as lanes.
+struct PrimLanes {
+  Lanes4 lower, upper, centroid;
+  RTK_INLINE explicit PrimLanes(const PrimRef& r)
+      : lower(lanes_lower(r)), upper(lanes_upper(r)), centroid(lower * 0.5f + upper * 0.5f) {}
+};
 
 // [ch04-bin-mapping]
 /// Maps a centroid to its bin on each axis: bin = floor((c - origin) * scale), clamped to the
@@ -80,19 +95,19 @@ struct BinMapping {
   }
   /// Whether binning can separate anything along `axis`.
   bool splittable(int axis) const { return scale[axis] > 0.0f; }
-  /// The bins of a centroid on the three axes (lane 3 is 0). Unusable axes give 0 (their
-  /// product may be NaN, which converts to INT_MIN and is clamped).
+  /// The bins of a centroid on the three axes (lane 3 is 0). The position is clamped to
+  /// [0, last bin] while still a float, one minimum and one maximum (SSE2 has no integer
+  /// ones); a NaN (an unusable axis, whose product may be 0 times infinity) becomes 0.
   RTK_INLINE Ints4 bins(Lanes4 c) const {
-    const Ints4 i = __builtin_convertvector((c - origin) * scale, Ints4);
-    const Ints4 zero{0, 0, 0, 0}, last = zero + (num_bins - 1);
-    const Ints4 above = i < zero ? zero : i;
-    return above < last ? above : last;
+    const Lanes4 zero{0, 0, 0, 0}, last = zero + float(num_bins - 1);
+    return __builtin_convertvector(min4(max4((c - origin) * scale, zero), last), Ints4);
   }
   /// The bin of a centroid's coordinate `c` along a splittable `axis`: the same arithmetic as
   /// bins(), so that partitioning sends every primitive where binning counted it.
   RTK_INLINE int bin(float c, int axis) const {
-    const int i = int((c - origin[axis]) * scale[axis]);
-    return i < 0 ? 0 : (i < num_bins ? i : num_bins - 1);
+    const float f = (c - origin[axis]) * scale[axis], last = float(num_bins - 1);
+    const float above = f > 0.0f ? f : 0.0f;
+    return int(above < last ? above : last);
   }
 };
 // [ch04-bin-mapping]
@@ -113,7 +128,9 @@ static_assert(sizeof(Bin) == 64, "one bin per cache line");
 struct Bins {
   int num_bins = 0;
   Bin bin[3][kMaxSahBins];
-  uint32_t count[3][kMaxSahBins];
+  /// How many primitives fell into bin i on each axis: count[i][axis] (lane 3 stays 0), so
+  /// that the sweep reads the three axes' counts of a bin with one load.
+  alignas(16) uint32_t count[kMaxSahBins][4];
 
   /// Empties the first `n` bins on every axis.
   void reset(int n) {
@@ -121,21 +138,18 @@ struct Bins {
     constexpr float inf = std::numeric_limits<float>::infinity();
     const Lanes4 pos{inf, inf, inf, inf}, neg = -pos;
     for (int axis = 0; axis < 3; ++axis)
-      for (int i = 0; i < n; ++i) {
-        bin[axis][i] = Bin{pos, neg, pos, neg};
-        count[axis][i] = 0;
-      }
+      for (int i = 0; i < n; ++i) bin[axis][i] = Bin{pos, neg, pos, neg};
+    for (int i = 0; i < n; ++i) count[i][0] = count[i][1] = count[i][2] = count[i][3] = 0;
   }
   /// Drops a primitive into its bin on each axis.
-  RTK_INLINE void add(const PrimRef& ref, const BinMapping& map) {
-    const Lanes4 lo = lanes_lower(ref), hi = lanes_upper(ref);
-    const Lanes4 c = lo * 0.5f + hi * 0.5f;  // centroid(), lane by lane
-    const Ints4 i = map.bins(c);
+  RTK_INLINE void add(const PrimRef& ref, const BinMapping& map) { add(PrimLanes(ref), map); }
+  RTK_INLINE void add(const PrimLanes& p, const BinMapping& map) {
+    const Ints4 i = map.bins(p.centroid);
     const int i0 = i[0], i1 = i[1], i2 = i[2];
-    extend(bin[0][i0], lo, hi, c, c);
-    extend(bin[1][i1], lo, hi, c, c);
-    extend(bin[2][i2], lo, hi, c, c);
-    ++count[0][i0], ++count[1][i1], ++count[2][i2];
+    extend(bin[0][i0], p.lower, p.upper, p.centroid, p.centroid);
+    extend(bin[1][i1], p.lower, p.upper, p.centroid, p.centroid);
+    extend(bin[2][i2], p.lower, p.upper, p.centroid, p.centroid);
+    ++count[i0][0], ++count[i1][1], ++count[i2][2];
   }
   /// Adds another set's bins (same mapping) to these. Minimum, maximum and integer addition do
   /// not depend on the order they are applied in, so the merged bins are the same whichever
@@ -145,7 +159,7 @@ struct Bins {
       for (int i = 0; i < num_bins; ++i) {
         const Bin& o = other.bin[axis][i];
         extend(bin[axis][i], o.lower, o.upper, o.cent_lower, o.cent_upper);
-        count[axis][i] += other.count[axis][i];
+        count[i][axis] += other.count[i][axis];
       }
   }
 

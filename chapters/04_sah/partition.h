@@ -18,6 +18,9 @@ struct SplitPlane {
   int axis = 0;
   int pos = 0;
 
+  /// The same decision for a primitive already read into lanes, with the vector arithmetic of
+  /// BinMapping::bins(), which gives the same bin as bin().
+  RTK_INLINE bool goes_left(const PrimLanes& p) const { return map->bins(p.centroid)[axis] < pos; }
   RTK_INLINE bool goes_left(const PrimRef& ref) const {
     float lo[3], hi[3];
     std::memcpy(lo, &ref.lower, sizeof lo);

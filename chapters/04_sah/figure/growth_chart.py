@@ -1,0 +1,43 @@
+"""Chapter 4's growth chart data: build time per triangle and peak memory per triangle of the
+default builder (BVH8, rotations on) over spheres of 1M, 4M and 16M triangles, from the growth/
+benchmarks of `ch04_bench` (JSON; medians when the run repeated). One thread: the CPU time of
+the building thread, which a shared machine's load does not inflate; two threads: wall-clock
+time. The last column is what one thread's time per triangle would be if it grew exactly like
+log2 n from the smallest scene on.
+
+    python3 growth_chart.py ch04_growth.json OUT.tsv"""
+import json
+import math
+import re
+import sys
+
+
+def main():
+    with open(sys.argv[1]) as f:
+        runs = json.load(f)["benchmarks"]
+    if any(b.get("run_type") == "aggregate" for b in runs):
+        runs = [dict(b, name=b["run_name"]) for b in runs if b.get("aggregate_name") == "median"]
+    rows = {}
+    for b in runs:
+        m = re.match(r"growth/[^/]+/[^/]+/tris:(\d+)/threads:(\d+)", b["name"])
+        if m:
+            rows[(int(m.group(1)), int(m.group(2)))] = b
+    sizes = sorted({n for n, _ in rows})
+    first = sizes[0]
+    scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+
+    def ns_per_tri(b, n, key):  # the benchmark's time per iteration, per triangle
+        return b[key] * scale[b["time_unit"]] / n
+
+    base = ns_per_tri(rows[(first, 1)], first, "cpu_time")
+    with open(sys.argv[2], "w") as out:
+        out.write("triangles\tns/tri 1T\tns/tri 2T\tpeak B/tri 1T\tpeak B/tri 2T\tlog n reference\n")
+        for n in sizes:
+            one, two = rows[(n, 1)], rows.get((n, 2), rows[(n, 1)])
+            ref = base * math.log2(n) / math.log2(first)
+            out.write(f"{n}\t{ns_per_tri(one, n, 'cpu_time'):.1f}\t{ns_per_tri(two, n, 'real_time'):.1f}\t"
+                      f"{one['peak_B/tri']:.1f}\t{two['peak_B/tri']:.1f}\t{ref:.1f}\n")
+
+
+if __name__ == "__main__":
+    main()
