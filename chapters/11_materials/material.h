@@ -76,10 +76,12 @@ struct Material {
 /// matched without regard to case):
 ///   - Matte: reflectance (colour or texture);  MatteTextured: Kd (texture), s0, ds;
 ///   - Mirror: reflectance (or reflectivity);
-///   - Metal: eta, k (colours), roughness (0: polished);
+///   - Metal: eta, k (colours), roughness (0: polished), reflectance (a colour on the Fresnel term);
 ///   - Dielectric / Glass: etaInside, etaOutside, transmission;
 ///   - ThinDielectric / ThinGlass: eta, transmission, thickness;
 ///   - Plastic: pigmentColor, eta, roughness;
+///   - Velvet: reflectance (colour or texture), backScattering, horizonScatteringColor,
+///     horizonScatteringFallOff (velvet.h);
 ///   - MetallicPaint: shadeColor, eta (glitterColor and glitterSpread are not modelled:
 ///     a smooth-coated Plastic, with a warning);
 ///   - OBJ (the MTL keys): Kd or map_Kd; Ks > 0 becomes a Plastic whose roughness is 1 / Ns

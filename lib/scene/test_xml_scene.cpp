@@ -202,12 +202,12 @@ TEST_CASE("lib_scene: malformed XML scenes are refused with file and line") {
   rtk::RenderScene s;
   std::vector<std::string> warnings;
   rtk::load_xml_scene(t.write("w.xml", "<scene><QuadMesh/><TriangleMesh><positions>0 0 0 1 0 0 0 1 0</positions><triangles>0 1 2</triangles>"
-                                       "<material><code>\"Velvet\"</code></material></TriangleMesh></scene>"),
+                                       "<material><code>\"Velour\"</code></material></TriangleMesh></scene>"),
                       s, [&](const std::string& w) { warnings.push_back(w); });
   CHECK(s.mesh.triangles.size() == 1u);
   REQUIRE(warnings.size() >= 2u);
   CHECK(warnings[0].find("<QuadMesh> is not supported") != std::string::npos);
-  CHECK(warnings[1].find("Velvet") != std::string::npos);
+  CHECK(warnings[1].find("Velour") != std::string::npos);
 }
 
 TEST_CASE("lib_scene: the real Embree XML scenes load (when /work/shared/scenes is present)") {
