@@ -218,8 +218,10 @@ Material make_material(std::string_view name_in, const ParameterList& p,
     if (p.get_float("d", 1.0f) < 1.0f)
       warn("OBJ: dissolve d < 1 (transparency) is not modelled; the surface is opaque");
     if (!is_black(p.get_color("Tf", Color()))) warn("OBJ: transmission filter Tf is not modelled");
-    if (!is_black(p.get_color("Ka", Color())))
-      warn("OBJ: ambient colour Ka is ignored (use Ke for emission)");
+    // Ka, the ambient colour, has no meaning in a path tracer, whose ambient light is the
+    // light that bounces; Embree 1.1 ignored it too (its lamps give Ka 20), so it is read
+    // without a warning. Emission is Ke.
+    p.get_color("Ka", Color());
     p.get_float("illum", 0.0f);
     m.emission = non_negative(p.get_color("Ke", Color()), "Ke");
   } else {

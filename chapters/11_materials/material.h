@@ -85,8 +85,8 @@ struct Material {
 ///   - MetallicPaint: shadeColor, eta (glitterColor and glitterSpread are not modelled:
 ///     a smooth-coated Plastic, with a warning);
 ///   - OBJ (the MTL keys): Kd or map_Kd; Ks > 0 becomes a Plastic whose roughness is 1 / Ns
-///     (a warning says that Ks's magnitude is replaced by the Fresnel term); d < 1, Tf and
-///     Ka are ignored with a warning; Ke is the emission.
+///     (a warning says that Ks's magnitude is replaced by the Fresnel term); d < 1 and Tf
+///     are ignored with a warning, Ka without one (as Embree 1.1 did); Ke is the emission.
 /// Any material may carry "emission" (a colour). An unknown name becomes a grey Matte, and
 /// every parameter that was not used is reported, both through `warn`. Invalid values (a
 /// negative index of refraction, a NaN) throw std::invalid_argument.
