@@ -33,7 +33,7 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   // No -o: the guide's interactive mode, the viewer (chapter 15), for `rtk -c` and `rtk view`.
   if (script.outputs.empty() && viewer_without_output) return run_viewer(script, viewer);
   if (script.outputs.empty())
-    throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm); "
+    throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm .exr); "
                      "`rtk -c SCENE.ecs` or `rtk view` without -o opens the interactive viewer");
   if (viewer.frames > 0) throw UsageError("-frames and -screenshot belong to the viewer (no -o)");
   // Every -o was checked where it was read (its folder exists and may be written); its format

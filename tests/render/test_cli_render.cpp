@@ -165,3 +165,22 @@ TEST_CASE("ch13: each -o renders at its position, as in Embree 1.1") {
   CHECK(r.output.find("after the last -o") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("ch13: rtk render writes OpenEXR, and reads it back as an environment map") {
+  const fs::path dir = fs::temp_directory_path() / ("rtk_exr_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string exr = (dir / "box.exr").string(), pfm = (dir / "box.pfm").string();
+  const Result r = run_rtk("render -c " + kCornell + " -size 12 6 -spp 2 -threads 2 -seed 3 -o " + exr + " -o " + pfm);
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  // The same floats as the PFM of the same render: both formats keep them exactly.
+  CHECK(rtk::read_image(exr).pixels == rtk::read_image(pfm).pixels);
+  const Result sky = run_rtk("render -trisphere 0 0 0 1 8 16 -hdrilight 1 1 1 " + exr +
+                             " -vp 0 0 -4 -vi 0 0 0 -size 8 8 -spp 2 -o " + (dir / "lit.pfm").string());
+  INFO(sky.output);
+  CHECK(sky.status == 0);
+  double sum = 0;
+  for (const auto& c : rtk::read_image((dir / "lit.pfm").string()).pixels) sum += c.r + c.g + c.b;
+  CHECK(sum > 0.0);
+  fs::remove_all(dir);
+}
