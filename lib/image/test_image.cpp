@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
 #include "image/framebuffer.h"
+#include "image/image_decode.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
 
@@ -98,6 +100,29 @@ TEST_CASE("lib_image: float formats round-trip exactly (PFM) or to RGBE precisio
   std::remove(hdr.c_str());
 }
 
+TEST_CASE("lib_image: OpenEXR round-trips the floats exactly, and a damaged file is an error") {
+  const Image image = test_image(37.0f);
+  const std::string exr = temp_path("a.exr");
+  write_image(exr, image);
+  const DecodedImage d = read_image_file(exr);
+  CHECK(d.linear);
+  REQUIRE(d.image.width == 5);
+  REQUIRE(d.image.height == 3);
+  CHECK(d.image.pixels == image.pixels);  // 32-bit floats, lossless compression
+  // Cut short anywhere, the file is an error that names it, never an image of zeros.
+  std::string bytes;
+  {
+    std::ifstream in(exr, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  for (size_t keep = 0; keep < bytes.size(); ++keep) {
+    INFO(keep);
+    CHECK_THROWS_WITH_AS(decode_image(std::string_view(bytes).substr(0, keep), "cut.exr"),
+                         doctest::Contains("cut.exr"), std::runtime_error);
+  }
+  std::remove(exr.c_str());
+}
+
 TEST_CASE("lib_image: 8-bit formats round-trip the tone-mapped bytes") {
   const Image image = test_image(0.9f);
   for (const char* ext : {".png", ".tga", ".ppm", ".PNG"}) {
@@ -121,9 +146,10 @@ TEST_CASE("lib_image: 8-bit formats round-trip the tone-mapped bytes") {
 TEST_CASE("lib_image: bad paths and extensions fail with a clear message") {
   const Image image = test_image(1.0f);
   try {
-    write_image(temp_path("c.exr"), image);
+    write_image(temp_path("c.tiff"), image);
     FAIL("no exception");
   } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find(".tiff") != std::string::npos);
     CHECK(std::string(e.what()).find(".exr") != std::string::npos);
     CHECK(std::string(e.what()).find(".png") != std::string::npos);
   }
