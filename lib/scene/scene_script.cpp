@@ -372,6 +372,26 @@ class ScriptReader {
         fail(t.where, std::string("-o: ") + e.what());
       }
       s_.outputs.push_back(path);
+    } else if (name == "-time") {
+      // A decimal number of seconds: NaN, infinity, zero and negative times are refused.
+      const Token& t = take(o, "a number of seconds");
+      const double seconds = scene_io::parse_float(t.text, t.where, o.text, 0.0f, 1e6f);
+      if (!(seconds > 0.0))
+        fail(t.where, "-time: " + scene_io::shown(t.text) + " seconds is not above 0");
+      s_.time_limit = seconds;
+    } else if (name == "-reference") {
+      // The converged image must be there and linear; it is read when the render ends, but a
+      // missing or unreadable file is an error now, before any work.
+      const Token& t = take(o, "an image file");
+      const std::filesystem::path path = dir_ / t.text;
+      std::string ext = path.extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (ext != ".pfm" && ext != ".hdr")
+        fail(t.where, "-reference " + scene_io::shown(t.text) +
+                          ": needs a linear image, .pfm or .hdr (8-bit images are tone-mapped)");
+      if (!std::filesystem::is_regular_file(path))
+        fail(t.where, "-reference: cannot open '" + path.string() + "'");
+      s_.reference = path;
     } else if (name == "-vignetting" || name == "-backplate" || name == "-refine") {
       take(o, "a value");
       warn(o.where, o.text + " is not modelled and is ignored");

@@ -13,7 +13,8 @@
 /// -seed n, -ambientlight r g b, -pointlight p I, -directionallight/-dirlight d E,
 /// -distantlight d L halfAngle, -trianglelight P U V L, -quadlight P U V L, -hdrilight r g b
 /// FILE, -trisphere p r numTheta numPhi, -o FILE. -vignetting, -backplate, -display,
-/// -fullscreen and -refine are read and ignored with a warning. `#` starts a comment; files
+/// -fullscreen and -refine are read and ignored with a warning. RTK's own -time SECONDS and
+/// -reference IMAGE are for `rtk render` (equal-time rendering and its error). `#` starts a comment; files
 /// are named relative to the script that names them.
 ///
 /// Every value is checked where it is read, so that its error names the file and line (or
@@ -51,6 +52,10 @@ struct SceneScript {
   AccelConfig accel;                         ///< -accel, -tri, -isa (threads: options.threads)
   std::string kernels = "rtk";               ///< -kernels rtk|embree: who traces the rays
   std::vector<std::filesystem::path> outputs;  ///< every -o, in order
+  /// -time SECONDS: render progressively until this much time is spent (0: -spp samples).
+  double time_limit = 0;
+  /// -reference IMAGE: a converged image (.pfm or .hdr, linear) to report the error against.
+  std::filesystem::path reference;
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
   /// Where each option checked only after reading was last given, by name ("-vp", "-vi" (also
   /// for -vd), "-vu", "-fov", "-radius", "-focaldistance", "-accel", "-tri", "-isa", "-kernels").
