@@ -228,7 +228,7 @@ section_ch12() { # lights: uniform against importance-sampled directions on the 
     | tee "$OUT/ch12.txt"
 }
 
-section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch13_convergence
+section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch13_convergence, ch13_equal_time
   build rtk bench_render
   "$B/apps/rtk" render -c scenes/cornell_box/cornell_box.ecs -spp 256 -o chapters/13_pathtracer/ch13_cornell_box.png \
     | tee "$OUT/ch13_render.txt"
