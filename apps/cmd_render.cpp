@@ -2,6 +2,8 @@
 // itself, left to right), hands the scene to chapter 14's device, which builds the kernels the
 // scene needs, renders a frame with chapter 13's path tracer and writes every -o image. Also
 // the guide's short form `rtk -c scene.ecs -o out.png`.
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <string>
 #include <thread>
@@ -9,6 +11,7 @@
 #include "14_device/device.h"
 #include "commands.h"
 #include "device_objects.h"
+#include "image/image_error.h"
 #include "image/image_io.h"
 #include "interrupt.h"
 #include "options.h"
@@ -20,7 +23,39 @@
 namespace rtk::cli {
 
 namespace {
-int render_output(SceneScript& script, std::span<const ScriptOutput> outputs);
+int render_output(SceneScript& script, std::span<const ScriptOutput> outputs, const Image& reference);
+
+// [ch13-time]
+// -time: progressive passes until the time is spent. The first pass is one sample per pixel;
+// each later pass takes as many samples as the time per sample so far says will fit in what is
+// left, but at most as many as were done (so that a wrong first estimate is corrected before
+// it costs much). The render ends when not one more sample fits. Passes over consecutive
+// sample ranges add up to exactly the image of one pass over all of them, so the result is the
+// image `-spp N` gives, N being the samples reached (written back into options.spp).
+RenderStats render_for(Device& device, const Handle& renderer, const Handle& camera,
+                       const Handle& scene, const Handle& framebuffer, double seconds,
+                       RenderOptions& options, const std::atomic<bool>* stop) {
+  constexpr uint32_t kMaxSamples = 1u << 24;
+  RenderStats total;
+  uint32_t done = 0;
+  while (done < kMaxSamples) {
+    uint32_t count = 1;
+    if (done > 0) {
+      const double per_sample = total.seconds / done;
+      const double fit = per_sample > 0 ? (seconds - total.seconds) / per_sample : done;
+      if (!(fit >= 1.0)) break;
+      count = static_cast<uint32_t>(std::min<double>({fit, double(done), double(kMaxSamples - done)}));
+    }
+    const RenderStats pass = device.render_samples(renderer, camera, scene, framebuffer, done, count, stop);
+    total += pass;
+    if (pass.stopped()) break;
+    done += count;
+  }
+  options.spp = static_cast<int>(done);
+  return total;
+}
+// [ch13-time]
+
 }  // namespace
 
 int run_render(std::span<const std::string_view> args, bool viewer_without_output) {
@@ -31,7 +66,11 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   const std::vector<std::string_view> script_args = take_viewer_options(args, viewer);
   read_script_args(script_args, script, [](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); });
   // No -o: the guide's interactive mode, the viewer (chapter 15), for `rtk -c` and `rtk view`.
-  if (script.outputs.empty() && viewer_without_output) return run_viewer(script, viewer);
+  if (script.outputs.empty() && viewer_without_output) {
+    if (script.time_limit > 0 || !script.reference.empty())
+      throw UsageError("-time and -reference are for rendering to a file (-o), not the viewer");
+    return run_viewer(script, viewer);
+  }
   if (script.outputs.empty())
     throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm .exr); "
                      "`rtk -c SCENE.ecs` or `rtk view` without -o opens the interactive viewer");
@@ -43,6 +82,27 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
       image_format_from_path(out.string());
     } catch (const std::exception& e) {
       throw UsageError(std::string("-o: ") + e.what());
+    }
+  }
+  // -reference: the converged image is read before any work, so that an unreadable one stops
+  // the command at once, and its size is checked against every image the script renders.
+  Image reference;
+  if (!script.reference.empty()) {
+    try {
+      reference = read_image(script.reference.string());
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("-reference: ") + e.what());
+    }
+    for (const ScriptOutput& out : script.output_states)
+      if (reference.width != out.options.width || reference.height != out.options.height)
+        throw UsageError("-reference: " + script.reference.string() + " is " +
+                         std::to_string(reference.width) + " x " + std::to_string(reference.height) +
+                         ", the render " + std::to_string(out.options.width) + " x " +
+                         std::to_string(out.options.height));
+    try {
+      relative_rms_error(reference, reference);  // refuses a black reference, or one not finite
+    } catch (const std::invalid_argument& e) {
+      throw UsageError("-reference: " + script.reference.string() + ": " + e.what());
     }
   }
   // As in Embree 1.1, each -o renders the state set up before it; what follows the last one
@@ -59,7 +119,7 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
     while (last < script.output_states.size() &&
            script.output_states[last].state == script.output_states[first].state)
       ++last;
-    status = render_output(script, {script.output_states.data() + first, last - first});
+    status = render_output(script, {script.output_states.data() + first, last - first}, reference);
     first = last;
   }
   return status;
@@ -68,7 +128,7 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
 namespace {
 
 // Renders one image, the state of `outputs.front()`, and writes it to every file of `outputs`.
-int render_output(SceneScript& script, std::span<const ScriptOutput> outputs) {
+int render_output(SceneScript& script, std::span<const ScriptOutput> outputs, const Image& reference) {
   const ScriptOutput& at = outputs.front();
   // The state at this -o; the script's given_at still names where options were given.
   SceneScript state;
@@ -109,20 +169,32 @@ int render_output(SceneScript& script, std::span<const ScriptOutput> outputs) {
   // was rendered is written.
   const Interrupt interrupt;
   const RenderStats stats =
-      device.render_frame(renderer, camera, scene, framebuffer, interrupt.flag());
+      script.time_limit > 0
+          ? render_for(device, renderer, camera, scene, framebuffer, script.time_limit, options, interrupt.flag())
+          : device.render_frame(renderer, camera, scene, framebuffer, interrupt.flag());
   if (stats.stopped())
     std::fprintf(stderr,
                  "rtk render: interrupted by %s: %llu of %llu tiles rendered; writing them\n",
                  interrupt.signal_name(), static_cast<unsigned long long>(stats.tiles_done),
                  static_cast<unsigned long long>(stats.tiles));
-  std::printf("render: %dx%d, %d spp, depth %d, %d threads, seed %u: %.3f s, %.3g samples/s, "
+  std::printf("render: %dx%d, %d spp%s, depth %d, %d threads, seed %u: %.3f s, %.3g samples/s, "
               "%.3g Mrays/s, %.0f%% of thread time in ray queries\n",
-              options.width, options.height, options.spp, options.max_depth, options.threads,
+              options.width, options.height, options.spp,
+              script.time_limit > 0 ? " reached in the time given" : "", options.max_depth, options.threads,
               options.seed, stats.seconds, stats.samples_per_second(), stats.rays_per_second() * 1e-6,
               100.0 * stats.kernel_share());
   if (stats.invalid_samples > 0)
     std::fprintf(stderr, "rtk render: warning: %llu samples were not finite and were dropped\n",
                  static_cast<unsigned long long>(stats.invalid_samples));
+  if (!script.reference.empty()) {
+    double error = 0;
+    try {
+      error = relative_rms_error(device.read_image(framebuffer), reference);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError("-reference: " + script.reference.string() + ": " + e.what());
+    }
+    std::printf("error: %.6g relative RMS against %s\n", error, script.reference.string().c_str());
+  }
   for (const ScriptOutput& out : outputs) {
     device.write_image(framebuffer, out.path.string(), at.tone);
     std::printf("wrote %s\n", out.path.string().c_str());

@@ -11,6 +11,7 @@
 
 #include "image/framebuffer.h"
 #include "image/image_decode.h"
+#include "image/image_error.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
 
@@ -174,4 +175,27 @@ TEST_CASE("lib_image: bad paths and extensions fail with a clear message") {
   std::remove(bad_pfm.c_str());
   CHECK(image_format_from_path("dir.v2/out.Tga") == ImageFormat::tga);
   CHECK_THROWS_AS(image_format_from_path("dir.png/out"), std::invalid_argument);
+}
+
+TEST_CASE("lib_image: the relative RMS error against a reference") {
+  const Image reference = test_image(1.0f);
+  CHECK(relative_rms_error(reference, reference) == 0.0);
+  // An image off by a factor (1 + e) everywhere is off by exactly e, whatever the scene.
+  CHECK(relative_rms_error(test_image(1.25f), reference) == doctest::Approx(0.25).epsilon(1e-6));
+  CHECK(relative_rms_error(test_image(0.0f), reference) == doctest::Approx(1.0));
+  // One value changed: sqrt(d^2 / sum r^2), summed by hand.
+  double norm = 0;
+  for (const Color& c : reference.pixels) norm += double(c.r) * c.r + double(c.g) * c.g + double(c.b) * c.b;
+  Image one = reference;
+  one.at(4, 2).g += 0.5f;
+  CHECK(relative_rms_error(one, reference) == doctest::Approx(std::sqrt(0.25 / norm)));
+  // What has no meaning is refused: another size, values that are not finite, a black reference.
+  CHECK_THROWS_WITH_AS(relative_rms_error(Image(4, 3), reference), "the image is 4 x 3, the reference 5 x 3",
+                       std::invalid_argument);
+  Image nan = reference;
+  nan.at(1, 2).b = std::nanf("");
+  CHECK_THROWS_AS(relative_rms_error(nan, reference), std::invalid_argument);
+  CHECK_THROWS_AS(relative_rms_error(reference, nan), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(relative_rms_error(reference, test_image(0.0f)), "the reference is black",
+                       std::invalid_argument);
 }

@@ -436,6 +436,26 @@ class ScriptReader {
       s_.refine = integer(o, 0, 1) != 0;
     } else if (name == "-fullscreen") {
       s_.fullscreen = true;  // the viewer's window fills the screen
+    } else if (name == "-time") {
+      // A decimal number of seconds: NaN, infinity, zero and negative times are refused.
+      const Token& t = take(o, "a number of seconds");
+      const double seconds = scene_io::parse_float(t.text, t.where, o.text, 0.0f, 1e6f);
+      if (!(seconds > 0.0))
+        fail(t.where, "-time: " + scene_io::shown(t.text) + " seconds is not above 0");
+      s_.time_limit = seconds;
+    } else if (name == "-reference") {
+      // The converged image must be there and linear; it is read when the render ends, but a
+      // missing or unreadable file is an error now, before any work.
+      const Token& t = take(o, "an image file");
+      const std::filesystem::path path = dir_ / t.text;
+      std::string ext = path.extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (ext != ".pfm" && ext != ".hdr" && ext != ".exr")
+        fail(t.where, "-reference " + scene_io::shown(t.text) +
+                          ": needs a linear image, .pfm, .hdr or .exr (8-bit images are tone-mapped)");
+      if (!std::filesystem::is_regular_file(path))
+        fail(t.where, "-reference: cannot open '" + path.string() + "'");
+      s_.reference = path;
     } else if (name == "-vignetting") {
       take(o, "a value");
       warn(o.where, o.text + " is not modelled and is ignored");
@@ -556,6 +576,8 @@ constexpr ScriptOptionHelp kScriptOptions[] = {
     {"-hdrilight", "r g b FILE", "environment map scaled by L (.hdr .exr .pfm .ppm .png ...)"},
     {"-conventions", "embree1.1|rtk", "how later images are read (default embree1.1: t = 0 top, nearest, 8-bit linear, 1.1's sky)"},
     {"-o", "FILE", "render the state set up so far to .png .tga .ppm .hdr .pfm .exr"},
+    {"-time", "SECONDS", "rtk render: render progressively until the time is spent (instead of -spp)"},
+    {"-reference", "IMAGE", "rtk render: print the relative RMS error against this converged .pfm .hdr .exr"},
     {"-vignetting", "v", "read and ignored (not modelled)"},
     {"-backplate", "FILE", "an image behind the scene, seen by camera rays that hit nothing"},
     {"-refine", "0|1", "the viewer refines progressively at start (1, the default) or not (0); its r key toggles it"},

@@ -13,9 +13,11 @@
 /// -seed n, -ambientlight r g b, -pointlight p I, -directionallight/-dirlight d E,
 /// -distantlight d L halfAngle, -trianglelight P U V L, -quadlight P U V L, -hdrilight r g b
 /// FILE, -trisphere p r numTheta numPhi, -righthanded, -lefthanded, -o FILE (rendered with the
-/// state set up before it; ScriptOutput). -vignetting, -backplate, -display, -fullscreen and
-/// -refine are read and ignored with a warning. script_option_help() lists them all. `#` starts a comment; files
-/// are named relative to the script that names them.
+/// state set up before it; ScriptOutput), -conventions, -backplate, and the viewer's -fullscreen
+/// and -refine; -vignetting is read and ignored with a warning. RTK's own -time SECONDS and
+/// -reference IMAGE are for `rtk render` (equal-time rendering and its error).
+/// script_option_help() lists them all. `#` starts a comment; files are named relative to the
+/// script that names them.
 ///
 /// Every value is checked where it is read, so that its error names the file and line (or
 /// the command line's argument): numbers are finite and in their option's range (-fov
@@ -81,6 +83,10 @@ struct SceneScript {
   /// The first option read after the last -o (empty when none was, or no -o was given): it
   /// changes no image, which `rtk render` says.
   std::string after_last_output;
+  /// -time SECONDS: render progressively until this much time is spent (0: -spp samples).
+  double time_limit = 0;
+  /// -reference IMAGE: a converged image (.pfm or .hdr, linear) to report the error against.
+  std::filesystem::path reference;
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
   /// Where each option checked only after reading was last given, by name ("-vp", "-vi" (also
   /// for -vd), "-vu", "-fov", "-radius", "-focaldistance", "-accel", "-tri", "-isa", "-kernels").

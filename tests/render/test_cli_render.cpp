@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image_error.h"
 #include "image/image_io.h"
 #include "render_test_support.h"
 #include "testing/run_program.h"
@@ -183,4 +184,85 @@ TEST_CASE("ch13: rtk render writes OpenEXR, and reads it back as an environment 
   for (const auto& c : rtk::read_image((dir / "lit.pfm").string()).pixels) sum += c.r + c.g + c.b;
   CHECK(sum > 0.0);
   fs::remove_all(dir);
+}
+
+namespace {
+// The number after `key` in the program's output, or -1.
+double number_after(const std::string& output, const std::string& key) {
+  const size_t at = output.find(key);
+  return at == std::string::npos ? -1.0 : std::stod(output.substr(at + key.size()));
+}
+
+bool same_pixels(const rtk::Image& a, const rtk::Image& b) {
+  if (a.width != b.width || a.height != b.height) return false;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    if (!(a.pixels[i] == b.pixels[i])) return false;
+  return true;
+}
+}  // namespace
+
+TEST_CASE("ch13: rtk render -time renders progressively, and its image is that of the samples it reached") {
+  // Whatever the machine's speed, the passes of -time must add up to exactly the image of
+  // -spp N, N being the count it reports: the test holds on a slow machine and a fast one.
+  const std::string tag = std::to_string(getpid());
+  const fs::path timed = fs::temp_directory_path() / ("rtk_time_" + tag + ".pfm");
+  const fs::path fixed = fs::temp_directory_path() / ("rtk_time_spp_" + tag + ".pfm");
+  const std::string common = "render -c " + kCornell + " -size 12 10 -seed 3 -threads 2 ";
+  const Result r = run_rtk(common + "-time 0.25 -o " + timed.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const double spp = number_after(r.output, "render: 12x10, ");
+  CHECK(r.output.find("spp reached in the time given") != std::string::npos);
+  REQUIRE(spp >= 1);
+  const Result f = run_rtk(common + "-spp " + std::to_string(static_cast<int>(spp)) + " -o " + fixed.string());
+  REQUIRE(f.status == 0);
+  CHECK(same_pixels(rtk::read_image(timed.string()), rtk::read_image(fixed.string())));
+  fs::remove(timed);
+  fs::remove(fixed);
+}
+
+TEST_CASE("ch13: rtk render -reference prints the relative RMS error against a converged image") {
+  const std::string tag = std::to_string(getpid());
+  const fs::path ref = fs::temp_directory_path() / ("rtk_reference_" + tag + ".pfm");
+  const fs::path out = fs::temp_directory_path() / ("rtk_reference_out_" + tag + ".pfm");
+  const std::string common = "render -c " + kCornell + " -size 16 12 -threads 2 ";
+  REQUIRE(run_rtk(common + "-spp 64 -seed 9 -o " + ref.string()).status == 0);
+  // The same image has no error; another seed's image has some, less than the image itself;
+  // more samples, less error.
+  const Result same = run_rtk(common + "-spp 64 -seed 9 -reference " + ref.string() + " -o " + out.string());
+  INFO(same.output);
+  REQUIRE(same.status == 0);
+  CHECK(number_after(same.output, "error: ") == 0.0);
+  const Result few = run_rtk(common + "-spp 2 -seed 1 -reference " + ref.string() + " -o " + out.string());
+  const Result more = run_rtk(common + "-spp 16 -seed 1 -reference " + ref.string() + " -o " + out.string());
+  REQUIRE(few.status == 0);
+  REQUIRE(more.status == 0);
+  const double e_few = number_after(few.output, "error: "), e_more = number_after(more.output, "error: ");
+  CHECK(e_few > 0.0);
+  CHECK(e_few < 1.0);
+  CHECK(e_more < e_few);
+  // The figure is lib/image's, computed on the image the command wrote.
+  CHECK(rtk::relative_rms_error(rtk::read_image(out.string()), rtk::read_image(ref.string())) ==
+        doctest::Approx(e_more).epsilon(1e-5));
+
+  // What cannot be judged is refused before any work, naming the option.
+  auto refused = [&](const std::string& args, const std::string& message) {
+    const Result bad = run_rtk(common + "-o " + out.string() + " " + args);
+    INFO(args, "\n", bad.output);
+    CHECK(bad.status == 2);
+    CHECK(bad.output.find(message) != std::string::npos);
+  };
+  refused("-spp 1 -reference " + ref.string() + " -size 8 8", "-reference: " + ref.string() + " is 16 x 12, the render 8 x 8");
+  refused("-reference /nonexistent/ref.pfm", "-reference: cannot open");
+  refused("-reference " + ref.string() + ".png", "needs a linear image");
+  refused("-time -1", "-time");
+  refused("-time nan", "-time: 'nan' is not a finite number");
+  refused("-time 0", "-time: 0 seconds is not above 0");
+  refused("-time", "-time: missing a number of seconds");
+  const fs::path black = fs::temp_directory_path() / ("rtk_reference_black_" + tag + ".pfm");
+  rtk::write_image(black.string(), rtk::Image(16, 12));
+  refused("-spp 1 -reference " + black.string(), "the reference is black");
+  fs::remove(black);
+  fs::remove(ref);
+  fs::remove(out);
 }
