@@ -56,7 +56,8 @@ int run_trace(std::span<const std::string_view> args) {
   const size_t repeat = options.get_count("repeat", 1, 1, 1000);
   // Refuses an unknown -accel or -tri before a large scene is loaded (with -motion, the motion
   // structure's strings are checked when it is built).
-  if (motion_scene.empty()) {
+  const bool motion_accel = config.accel == kMotionAccel || config.accel.starts_with(std::string(kMotionAccel) + ".");
+  if (motion_scene.empty() && !motion_accel) {
     resolve_config(config);
   } else {
     AccelConfig checked = config;

@@ -8,6 +8,7 @@
 /// and line.
 #pragma once
 
+#include <cstdio>
 #include <span>
 #include <string_view>
 
@@ -30,5 +31,11 @@ int run_compare(std::span<const std::string_view> args);
 /// With `viewer_without_output` (`rtk view`, and the guide's short form `rtk -c SCENE.ecs`),
 /// no -o opens the interactive viewer (chapter 15) instead of being an error.
 int run_render(std::span<const std::string_view> args, bool viewer_without_output = false);
+/// `rtk render -help` (also `rtk view -help`, `rtk -c SCENE.ecs -help`): every option of the
+/// scripts and of the command line, one line each, and the viewer's own.
+void print_render_options(std::FILE* out);
+/// `rtk version` (-version): the version, the kernel variants compiled in and the kernels the
+/// renderer can run on.
+int run_version();
 
 }  // namespace rtk::cli

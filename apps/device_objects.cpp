@@ -3,7 +3,11 @@
 namespace rtk::cli {
 
 Handle commit_scene(Device& device, const SceneScript& script, int threads) {
-  Handle scene = device.import_scene(script.scene);
+  return commit_scene(device, script.scene, script, threads);
+}
+
+Handle commit_scene(Device& device, const RenderScene& render_scene, const SceneScript& script, int threads) {
+  Handle scene = device.import_scene(render_scene);
   if (!script.accel.accel.empty()) device.set(scene, "accel", script.accel.accel);
   if (!script.accel.tri.empty()) device.set(scene, "tri", script.accel.tri);
   if (script.accel.isa) device.set(scene, "isa", std::string(isa_name(*script.accel.isa)));
@@ -23,6 +27,7 @@ void commit_camera(Device& device, const Handle& camera, const CameraParams& par
   device.set(camera, "lookAt", params.look_at);
   device.set(camera, "up", params.up);
   device.set(camera, "fov", params.fov_degrees);
+  device.set(camera, "rightHanded", params.right_handed ? 1 : 0);
   if (camera.type() == "thinlens") {
     device.set(camera, "radius", params.lens_radius);
     device.set(camera, "focalDistance", params.focal_distance);
@@ -38,12 +43,15 @@ Handle commit_renderer(Device& device, const RenderOptions& options) {
   device.set(renderer, "tileSize", options.tile_size);
   device.set(renderer, "sampler",
              options.sampler == SamplerType::independent ? "independent" : "sobol");
-  device.set(renderer, "filter", options.filter == FilterType::tent ? "tent" : "box");
+  device.set(renderer, "filter", options.filter == FilterType::tent      ? "tent"
+                                 : options.filter == FilterType::bspline ? "bspline"
+                                                                         : "box");
   device.set(renderer, "filterRadius", options.filter_radius);
   device.set(renderer, "progress", options.progress ? 1 : 0);
   if (!options.eye_light) {
     device.set(renderer, "maxDepth", options.max_depth);
     device.set(renderer, "rrDepth", options.rr_depth);
+    device.set(renderer, "minContribution", options.min_contribution);
   }
   device.commit(renderer);
   return renderer;

@@ -13,6 +13,8 @@ namespace rtk::cli {
 /// The script's scene, imported and committed with its -accel, -tri, -isa and `threads` build
 /// threads. Throws std::invalid_argument (from the commit) for a configuration RTK lacks.
 Handle commit_scene(Device& device, const SceneScript& script, int threads);
+/// The same for `scene` (the script's as it was at one -o) with the script's configuration.
+Handle commit_scene(Device& device, const RenderScene& scene, const SceneScript& config, int threads);
 
 /// A committed camera of `params` ("pinhole", or "thinlens" with a lens radius).
 Handle commit_camera(Device& device, const CameraParams& params);

@@ -31,16 +31,23 @@ constexpr const char* kUsage =
     "  render  [-c SCENE.ecs] [-size W H] [-spp N] [-depth N] [-seed N] [-threads N] [-accel "
     "SPEC]\n"
     "          [-tri SPEC] [-isa NAME] [-kernels rtk|embree] [any option of the guide's scripts]\n"
-    "          -o IMAGE.png|tga|ppm|hdr|pfm\n"
+    "          [-time SECONDS] [-reference IMAGE.pfm] -o IMAGE.png|tga|ppm|hdr|pfm\n"
     "          render with the path tracer, on RTK's kernels or (-kernels embree) on Embree's;\n"
+    "          -time renders progressively until the time is spent (instead of -spp),\n"
+    "          -reference prints the relative RMS error against a converged image;\n"
     "          `rtk -c SCENE.ecs ... -o IMAGE` is the same\n"
     "  view    [-c SCENE.ecs] [options of render] [-frames N [-screenshot FILE.png]]\n"
     "          the interactive viewer (also `rtk -c SCENE.ecs` without -o): mouse orbits, pans,\n"
     "          dollies; c prints the camera; -frames N closes it after N frames,\n"
     "          -screenshot then saves the window\n"
-    "  help    this text\n"
+    "  help    this text, with every option of render, view and the scripts (also -help;\n"
+    "          `rtk render -help` and `rtk -c SCENE.ecs -help` list those options alone)\n"
+    "  version the version and the kernels compiled in (also -version)\n"
     "exit status: 0 success, 1 compare found differences, 2 error (message on stderr),\n"
     "  130 or 143 a render stopped by SIGINT or SIGTERM (the image so far is written)\n";
+
+bool is_help(std::string_view a) { return a == "help" || a == "-h" || a == "-help" || a == "--help"; }
+bool is_version(std::string_view a) { return a == "version" || a == "-version" || a == "--version"; }
 
 }  // namespace
 
@@ -57,6 +64,25 @@ int main(int argc, char** argv) {
     // write that fails at the end (a full disk) is an error too.
     rtk::cli::check_stdout();
     const int status = [&] {
+      // -help anywhere: the commands, or the options of the command it follows (render, view
+      // and the guide's short form, whose options are the scripts').
+      const bool renders = command == "render" || command == "view" ||
+                           (command.size() > 1 && command[0] == '-' && !is_help(command) && !is_version(command));
+      if (is_help(command)) {
+        std::fputs(kUsage, stdout);
+        std::fputs("\n", stdout);
+        rtk::cli::print_render_options(stdout);
+        return 0;
+      }
+      for (std::string_view a : rest)
+        if (is_help(a) && a != "help") {
+          if (renders)
+            rtk::cli::print_render_options(stdout);
+          else
+            std::fputs(kUsage, stdout);
+          return 0;
+        }
+      if (is_version(command)) return rtk::cli::run_version();
       if (command == "info") return rtk::cli::run_info(rest);
       if (command == "rays") return rtk::cli::run_rays(rest);
       if (command == "trace") return rtk::cli::run_trace(rest);
@@ -64,13 +90,8 @@ int main(int argc, char** argv) {
       if (command == "render") return rtk::cli::run_render(rest);
       if (command == "view") return rtk::cli::run_render(rest, true);
       // The guide's short form: options without a command render (rtk -c scene.ecs -o out.png).
-      if (command.size() > 1 && command[0] == '-' && command != "-h" && command != "-help" &&
-          command != "--help")
-        return rtk::cli::run_render(args, true);
-      if (command == "help" || command == "-h" || command == "-help" || command == "--help") {
-        std::fputs(kUsage, stdout);
-        return 0;
-      }
+      if (renders) return rtk::cli::run_render(command == "render" || command == "view" ? rest : args,
+                                               command != "render");
       std::fprintf(stderr, "rtk: unknown command '%s'\n%s", command.c_str(), kUsage);
       return rtk::cli::kExitError;
     }();

@@ -276,12 +276,18 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
   // (and what Mesa's software rasteriser gives under Xvfb).
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "rtk viewer", nullptr, nullptr);
+  // -fullscreen: a window of the primary monitor's size on that monitor; the framebuffer
+  // follows the window's size, as for any resize.
+  GLFWmonitor* monitor = script.fullscreen ? glfwGetPrimaryMonitor() : nullptr;
+  const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+  GLFWwindow* window = mode ? glfwCreateWindow(mode->width, mode->height, "rtk viewer", monitor, nullptr)
+                            : glfwCreateWindow(options.width, options.height, "rtk viewer", nullptr, nullptr);
   if (window == nullptr)
     throw std::runtime_error("cannot open a window (GLFW: " + g_glfw_error + "); " + kHowToRender);
   glfwMakeContextCurrent(window);
   glfwSwapInterval(0);  // the renderer, not the display, sets the pace
   ViewerState state;
+  state.refine = script.refine;
   state.camera = OrbitCamera::from_params(script.scene.camera);
   state.kernels = kernels.get();
   glfwSetWindowUserPointer(window, &state);

@@ -276,7 +276,7 @@ section_ch12() { # lights: uniform against importance-sampled directions on the 
     | tee "$OUT/ch12.txt"
 }
 
-section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch13_convergence
+section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch13_convergence, ch13_equal_time
   build rtk bench_render
   "$B/apps/rtk" render -c scenes/cornell_box/cornell_box.ecs -spp 256 -o chapters/13_pathtracer/ch13_cornell_box.png \
     | tee "$OUT/ch13_render.txt"
@@ -286,12 +286,23 @@ section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; t
   table ch13 chapters/13_pathtracer/ch13_render.md \
     python3 chapters/13_pathtracer/figure/bench_table.py "$OUT/ch13.json"
   run_section ch13_convergence
+  run_section ch13_equal_time
 }
 
 section_ch13_convergence() { # path tracer: error against samples per pixel for both samplers; the chart
   build rtk
   bash chapters/13_pathtracer/figure/convergence.sh "$B/apps/rtk" "$OUT/ch13_convergence" \
     chapters/13_pathtracer/ch13_convergence.png
+}
+
+section_ch13_equal_time() { # path tracer against Embree 3's pathtracer: samples/s, and error against time (chart)
+  build rtk
+  command -v pathtracer >/dev/null || { echo "  (no pathtracer: install embree-tools)"; return 0; }
+  local buddha=""
+  have_scenes && buddha=$SCENES/happy_buddha_100k/buddha.obj
+  python3 chapters/13_pathtracer/figure/equal_time.py "$B/apps/rtk" "$OUT/ch13_equal_time" \
+    chapters/13_pathtracer $buddha
+  plot chapters/13_pathtracer/figure/equal_time.gp chapters/13_pathtracer/ch13_equal_time
 }
 
 section_ch14() { # device: a frame through the device against the renderer directly, and a commit
@@ -330,7 +341,8 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch10 ch11 ch12 ch13 ch14 ch15 embree)
-PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch11_gallery ch13_convergence)
+PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch11_gallery
+       ch13_convergence ch13_equal_time)
 
 # --- the machine ------------------------------------------------------------------------------
 

@@ -1,6 +1,7 @@
 // Chapter 13 benchmarks: the path tracer's throughput (camera samples and rays per second)
 // and the share of its time spent in the ray kernels, on the Cornell box with each ISA's
-// kernels, and on a real mesh (the Stanford bunny from $RTK_SCENES, skipped without it).
+// kernels and with each sampler, and on real meshes (the Stanford bunny and the Happy Buddha
+// from $RTK_SCENES, skipped without it).
 // Run: RTK_SCENES=<shared/scenes> build/bench/bench_render (bash scripts/measure.sh ch13)
 #include <benchmark/benchmark.h>
 
@@ -71,5 +72,36 @@ void BM_bunny(benchmark::State& state) {
   run(state, scene, options, {});
 }
 BENCHMARK(BM_bunny)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same Cornell box with the best ISA on one thread and each sampler of chapter 10
+// (0 independent, 1 Sobol): what the sample generator costs the whole render.
+void BM_cornell_box_sampler(benchmark::State& state) {
+  const SceneScript& script = bench::cornell_box_script();
+  RenderOptions options = script.options;
+  options.width = options.height = 128;
+  options.spp = 4;
+  options.threads = 1;
+  options.sampler = static_cast<SamplerType>(state.range(0));
+  run(state, script.scene, options, {});
+}
+BENCHMARK(BM_cornell_box_sampler)->Arg(0)->Arg(1)->ArgName("sampler")->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The Happy Buddha (100,000 triangles), grey matte under a uniform sky; 128 x 128, 2 samples
+// per pixel per iteration, one thread.
+void BM_buddha(benchmark::State& state) {
+  const auto path = bench::shared_scene("happy_buddha_100k/buddha.obj");
+  if (!path) {
+    state.SkipWithError("set RTK_SCENES to the shared scenes folder to render the Buddha");
+    return;
+  }
+  static const RenderScene scene = bench::grey_mesh_under_sky(*path, {0.0f, 0.0f, 1.1f});
+  RenderOptions options;
+  options.width = options.height = 128;
+  options.spp = 2;
+  options.max_depth = 8;
+  options.threads = 1;
+  run(state, scene, options, {});
+}
+BENCHMARK(BM_buddha)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

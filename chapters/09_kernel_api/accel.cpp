@@ -12,6 +12,7 @@
 
 #include "01_base/timer.h"
 #include "07_intersectors/triangle_config.h"
+#include "09_kernel_api/motion_accel.h"
 #include "09_kernel_api/backends.h"
 
 namespace rtk {
@@ -91,7 +92,7 @@ const BackendEntry& resolve(const AccelConfig& config, Isa isa, size_t triangles
   for (const BackendEntry& e : table)
     if (accel_name(e) == accel) rows.push_back(&e);
   if (base == "bvh4mb")  // chapter 8's structure is built from two meshes: api/motion_accel.h
-    throw std::invalid_argument("-accel: bvh4mb traces motion blur and needs the scene at time 1 too (-motion)");
+    throw std::invalid_argument("-accel: bvh4mb is built by Accel(t0, t1, config) (09_kernel_api/motion_accel.h)");
   if (rows.empty())
     throw std::invalid_argument("-accel: '" + config.accel + "' is not available; supported: " +
                                 join(supported_accels()));
@@ -199,6 +200,12 @@ AccelInfo resolve_config(const AccelConfig& config) {
 }
 
 Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
+  // Chapter 8's motion structure on a static scene, as Embree 1.1 builds it: the mesh is its
+  // own position at time 1, and every vertex stands still.
+  if (config.accel == kMotionAccel || config.accel.starts_with(std::string(kMotionAccel) + ".")) {
+    *this = Accel(mesh, mesh, config);
+    return;
+  }
   check_threads(config.threads);
   info_ = resolve_config(config);
   // (The scene's size may change the default layout that resolve_config() reported.)

@@ -4,6 +4,7 @@
 
 #include "10_sampling/camera.h"
 #include "10_sampling/sampler.h"
+#include "10_sampling/sobol.h"
 
 using namespace rtk;
 
@@ -31,6 +32,26 @@ void BM_pixel_sample(benchmark::State& state) {
 BENCHMARK(BM_pixel_sample)
     ->Arg(static_cast<int>(SamplerType::independent))
     ->Arg(static_cast<int>(SamplerType::sobol));
+
+// One Sobol 2D point alone, as the definition computes it (sobol_owen_reference) and as the
+// sampler does (sobol_owen), on the same indices and seeds.
+void BM_sobol_point(benchmark::State& state) {
+  const bool fast = state.range(0) == 1;
+  uint32_t index = 0, sink = 0;
+  Pcg32 rng(3);
+  SobolSeeds seeds{rng.next_u32(), rng.next_u32(), rng.next_u32()};
+  for (auto _ : state) {
+    const uint32_t i = index++ & 255u;
+    seeds.shuffle += 0x9e3779b9u;  // another dimension each time
+    const std::array<uint32_t, 2> p =
+        fast ? sobol_owen(reverse_bits(i), seeds) : sobol_owen_reference(i, seeds);
+    sink += p[0] ^ p[1];
+  }
+  benchmark::DoNotOptimize(sink);
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(fast ? "fast" : "definition");
+}
+BENCHMARK(BM_sobol_point)->Arg(0)->Arg(1);
 
 void BM_camera_ray(benchmark::State& state) {
   CameraParams p;

@@ -30,8 +30,12 @@ Camera::Camera(const CameraParams& p) : params_(p) {
   // The up vector must leave a usable sideways direction (not parallel to the view).
   require(length(side) > 1e-6f * length(p.up),
           "up vector is zero or parallel to the viewing direction");
-  u_ = normalize(side);
-  v_ = cross(z_, u_);
+  // [ch10-camera-handedness]
+  // Up is the same in both conventions; only the image's right axis turns around.
+  const Vec3f left_handed_right = normalize(side);
+  v_ = cross(z_, left_handed_right);
+  u_ = p.right_handed ? -left_handed_right : left_handed_right;
+  // [ch10-camera-handedness]
   image_distance_ = 0.5f / std::tan(0.5f * p.fov_degrees * kPi / 180.0f);
   if (params_.focal_distance == 0.0f) params_.focal_distance = length(view);
 }

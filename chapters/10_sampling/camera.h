@@ -18,11 +18,15 @@ struct CameraParams {
   float aspect = 1.0f;        ///< image width / height
   float lens_radius = 0.0f;   ///< -radius: 0 is a pinhole; > 0 a thin lens (depth of field)
   float focal_distance = 0;   ///< distance to the plane in focus; 0 means |look_at - position|
+  bool right_handed = false;  ///< -righthanded: the image mirrored left to right (Embree 2/3)
 };
 
 /// A perspective camera in the Embree 1.1 convention: Z = normalize(look_at - position),
 /// U = normalize(cross(up, Z)) points right in the image and V = cross(Z, U) up, a
-/// left-handed frame (with up = +y and a view along +z, right is +x).
+/// left-handed frame (with up = +y and a view along +z, right is +x). With `right_handed`
+/// (Embree 2 and 3's option, Embree 3's default) right is -U instead: the same view, mirrored
+/// left to right, as a right-handed world expects (with up = +y and a view along +z, right
+/// is -x).
 class Camera {
  public:
   /// Builds the camera; throws std::invalid_argument with the reason for a NaN or infinite

@@ -14,9 +14,11 @@ enum class FilterType {
   box,   ///< constant over a square of half-width `radius` (0.5: the pixel itself)
   tent,  ///< separable triangle, 1 - |x| / radius per axis (radius 1: reaches the neighbours'
          ///< centres)
+  bspline,  ///< separable cubic B-spline (Embree 1.1's smoothest filter; radius 2: two pixels
+            ///< each way)
 };
 
-/// Parses "box" or "tent"; throws std::invalid_argument naming both otherwise.
+/// Parses "box", "tent" or "bspline"; throws std::invalid_argument naming them otherwise.
 FilterType parse_filter_type(std::string_view name);
 
 /// A sampled film offset from the pixel centre, and the weight the sample carries
@@ -33,7 +35,7 @@ struct FilterSample {
 class PixelFilter {
  public:
   /// A filter of the given type and radius in pixels; radius <= 0 means the type's default
-  /// (box 0.5, tent 1). Throws std::invalid_argument for a NaN or infinite radius.
+  /// (box 0.5, tent 1, bspline 2). Throws std::invalid_argument for a NaN or infinite radius.
   explicit PixelFilter(FilterType type = FilterType::box, float radius = 0.0f);
 
   /// The filter's type.

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "10_sampling/rng.h"
+#include "10_sampling/sobol.h"
 #include "10_sampling/vec2.h"
 
 namespace rtk {
@@ -28,7 +29,9 @@ SamplerType parse_sampler_type(std::string_view name);
 /// The Sobol variant gives each dimension (a 1D number or a 2D pair) its own shuffled and
 /// Owen-scrambled copy of the (0,2)-sequence ("padding", Kollig and Keller 2002; the shuffle
 /// is Burley 2020's nested uniform scramble of the index). For 2^m samples in a pixel each
-/// pair is then a (0,m,2)-net: every elementary interval of area 2^-m holds one point.
+/// pair is then a (0,m,2)-net: every elementary interval of area 2^-m holds one point. A
+/// dimension costs one 64-bit hash for its seeds, three LK hashes and a few table loads
+/// (sobol_owen), the same for every dimension index.
 class Sampler {
  public:
   /// A sampler of the given type; the seed selects a different, equally good image.
@@ -39,22 +42,43 @@ class Sampler {
   void start_pixel_sample(int x, int y, uint32_t index);
 
   /// The next 1D number in [0, 1).
-  float get_1d();
+  float get_1d() {
+    if (type_ == SamplerType::independent) return rng_.next_float();
+    return to_unit_float(sobol_owen_1d(reversed_index_, next_seeds()));
+  }
   /// The next 2D point in [0, 1)^2.
-  Vec2f get_2d();
+  Vec2f get_2d() {
+    if (type_ == SamplerType::independent) {
+      const float u = rng_.next_float();
+      return {u, rng_.next_float()};
+    }
+    const std::array<uint32_t, 2> p = sobol_owen(reversed_index_, next_seeds());
+    return {to_unit_float(p[0]), to_unit_float(p[1])};
+  }
   /// The film position within the pixel: by convention the first 2D point of a pixel sample.
   Vec2f get_pixel_2d() { return get_2d(); }
 
   /// The type this sampler was made with.
   SamplerType type() const { return type_; }
 
- private:
-  uint32_t dimension_seed();
+  /// The scramble seeds of the next Sobol dimension (and counts it): sobol_owen_reference with
+  /// these seeds and the sample index is what get_2d returns, as 32-bit fractions.
+  SobolSeeds next_seeds() {
+    // [ch10-seeds]
+    // One splitmix64 step from the pixel's hash: the pixel's dimensions are a Weyl sequence
+    // through a mixer, so dimension d costs the same for every d. Its two halves and a
+    // multiply of it are the three seeds.
+    const uint64_t h = mix64(pixel_hash_ + ++dimension_ * 0x9e3779b97f4a7c15ull);
+    return {static_cast<uint32_t>(h), static_cast<uint32_t>(h >> 32),
+            static_cast<uint32_t>((h * 0xd1b54a32d192ed03ull) >> 32)};
+    // [ch10-seeds]
+  }
 
+ private:
   SamplerType type_;
   uint32_t seed_;
   uint64_t pixel_hash_ = 0;
-  uint32_t index_ = 0;
+  uint32_t reversed_index_ = 0;  // the sample index, bit-reversed once for all dimensions
   uint32_t dimension_ = 0;
   Pcg32 rng_;
 };

@@ -14,7 +14,7 @@
 using namespace rtk;
 
 namespace {
-constexpr int kChi2Tests = 3;
+constexpr int kChi2Tests = 4;
 const double kAlpha = chi2::sidak_alpha(chi2::kSuiteSignificance, kChi2Tests);
 }  // namespace
 
@@ -92,7 +92,7 @@ TEST_CASE("ch10: a 2D distribution follows its density (chi-square)") {
 }
 
 TEST_CASE("ch10: filters sample offsets in proportion to their weights") {
-  for (FilterType type : {FilterType::box, FilterType::tent}) {
+  for (FilterType type : {FilterType::box, FilterType::tent, FilterType::bspline}) {
     const PixelFilter filter(type);
     const float r = filter.radius();
     // The integral is right (midpoint rule on a fine grid).
@@ -105,7 +105,7 @@ TEST_CASE("ch10: filters sample offsets in proportion to their weights") {
     // Sampled offsets follow evaluate / integral.
     chi2::Grid grid{-r, r, -r, r, 12, 12};
     std::vector<double> observed(grid.size(), 0.0);
-    Pcg32 rng(type == FilterType::box ? 12 : 13);
+    Pcg32 rng(12 + static_cast<int>(type));
     const int n = 100000;
     for (int i = 0; i < n; ++i) {
       const float u0 = rng.next_float();
@@ -121,13 +121,24 @@ TEST_CASE("ch10: filters sample offsets in proportion to their weights") {
     for (double& e : expected) e *= n;
     const chi2::Result res = chi2::pearson(observed, expected);
     if (chi2::report_enabled())
-      std::printf("ch10 chi2 %-24s %s\n", type == FilterType::box ? "box filter" : "tent filter",
+      std::printf("ch10 chi2 %-24s %s\n",
+                  type == FilterType::box ? "box filter" : type == FilterType::tent ? "tent filter" : "B-spline filter",
                   res.summary().c_str());
     CHECK(res.passed(kAlpha));
   }
   CHECK(PixelFilter(FilterType::box).radius() == 0.5f);
   CHECK(PixelFilter(FilterType::tent).radius() == 1.0f);
   CHECK(parse_filter_type("tent") == FilterType::tent);
+  CHECK(PixelFilter(FilterType::bspline).radius() == 2.0f);
+  CHECK(parse_filter_type("bspline") == FilterType::bspline);
+  // The B-spline's profile: 2/3 at the centre, 1/6 one pixel out (half its radius), 0 at the edge.
+  const PixelFilter b(FilterType::bspline);
+  CHECK(b.evaluate({0, 0}) == doctest::Approx(4.0 / 9.0));
+  CHECK(b.evaluate({1, 0}) == doctest::Approx(1.0 / 9.0));
+  CHECK(b.evaluate({2, 0}) == doctest::Approx(0.0));
+  // Its sampled offsets are symmetric, half on each side of the centre.
+  CHECK(b.sample({0.5f, 0.5f}).offset.x == doctest::Approx(0.0f).epsilon(1e-6));
+  CHECK(b.sample({0.25f, 0.75f}).offset.x == doctest::Approx(-b.sample({0.75f, 0.25f}).offset.x));
   CHECK_THROWS_AS(parse_filter_type("mitchell"), std::invalid_argument);
   CHECK_THROWS_AS(PixelFilter(FilterType::tent, INFINITY), std::invalid_argument);
 }

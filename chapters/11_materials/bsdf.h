@@ -12,13 +12,14 @@
 #include "11_materials/plastic.h"
 #include "11_materials/rough_conductor.h"
 #include "11_materials/specular.h"
+#include "11_materials/velvet.h"
 
 namespace rtk {
 
 /// Every scattering model of chapter 11. A closed set in a variant rather than a class
 /// hierarchy: a BSDF is made at every hit, and a variant needs no allocation there.
 using BsdfModel = std::variant<Lambertian, Mirror, SmoothConductor, RoughConductor,
-                               SmoothDielectric, ThinDielectric, Plastic>;
+                               SmoothDielectric, ThinDielectric, Plastic, Velvet>;
 
 /// Whether a model scatters only into delta lobes (mirror, smooth metal, glass): light
 /// sampling is useless there, and an integrator skips it.

@@ -73,6 +73,7 @@ Bsdf Material::make_bsdf(const Frame& frame, Vec2f uv) const {
     const Color c = albedo->eval(uv);
     if (auto* l = std::get_if<Lambertian>(&model)) l->reflectance = c;
     if (auto* p = std::get_if<Plastic>(&model)) p->pigment = c;
+    if (auto* v = std::get_if<Velvet>(&model)) v->reflectance = c;
   }
   return Bsdf(frame, model);
 }
@@ -116,6 +117,7 @@ void diffuse(Material& m, const ParameterList& p, const std::string& name, Color
     non_negative(c->color(), name.c_str());
     if (auto* l = std::get_if<Lambertian>(&m.prototype)) l->reflectance = c->color();
     if (auto* q = std::get_if<Plastic>(&m.prototype)) q->pigment = c->color();
+    if (auto* v = std::get_if<Velvet>(&m.prototype)) v->reflectance = c->color();
   } else {
     m.albedo = std::move(t);
   }
@@ -147,6 +149,15 @@ Material make_material(std::string_view name_in, const ParameterList& p,
     const Vec2f s0 = p.get_float2("s0", {0, 0}), ds = p.get_float2("ds", {1, 1});
     if (m.albedo && !(s0 == Vec2f{0, 0} && ds == Vec2f{1, 1}))
       m.albedo = std::make_shared<MappedTexture>(m.albedo, s0, ds);
+  } else if (name == "velvet") {
+    m.name = "Velvet";
+    Velvet v;
+    v.back_scattering = non_negative(p.get_float("backScattering", v.back_scattering), "backScattering");
+    v.horizon = non_negative(p.get_color("horizonScatteringColor", v.horizon), "horizonScatteringColor");
+    v.horizon_falloff =
+        non_negative(p.get_float("horizonScatteringFallOff", v.horizon_falloff), "horizonScatteringFallOff");
+    m.prototype = v;
+    diffuse(m, p, "reflectance", Velvet{}.reflectance);
   } else if (name == "mirror") {
     m.name = "Mirror";
     const Color r = p.has("reflectivity") ? p.get_color("reflectivity", Color(1))
@@ -159,10 +170,12 @@ Material make_material(std::string_view name_in, const ParameterList& p,
     const Color k = non_negative(p.get_color("k", Color(7.8f, 6.7f, 5.5f)), "k");
     const float alpha =
         roughness_to_alpha(non_negative(p.get_float("roughness", 0.01f), "roughness"));
+    // Embree 1.1's reflectance colours the metal: a factor on its Fresnel term.
+    const Color r = non_negative(p.get_color("reflectance", Color(1)), "reflectance");
     if (alpha == 0.0f)
-      m.prototype = SmoothConductor{eta, k};
+      m.prototype = SmoothConductor{eta, k, r};
     else
-      m.prototype = RoughConductor{eta, k, GgxDistribution{alpha}};
+      m.prototype = RoughConductor{eta, k, GgxDistribution{alpha}, r};
   } else if (name == "dielectric" || name == "glass") {
     m.name = "Dielectric";
     const float inside = positive(p.get_float("etaInside", 1.4f), "etaInside");
@@ -205,8 +218,10 @@ Material make_material(std::string_view name_in, const ParameterList& p,
     if (p.get_float("d", 1.0f) < 1.0f)
       warn("OBJ: dissolve d < 1 (transparency) is not modelled; the surface is opaque");
     if (!is_black(p.get_color("Tf", Color()))) warn("OBJ: transmission filter Tf is not modelled");
-    if (!is_black(p.get_color("Ka", Color())))
-      warn("OBJ: ambient colour Ka is ignored (use Ke for emission)");
+    // Ka, the ambient colour, has no meaning in a path tracer, whose ambient light is the
+    // light that bounces; Embree 1.1 ignored it too (its lamps give Ka 20), so it is read
+    // without a warning. Emission is Ke.
+    p.get_color("Ka", Color());
     p.get_float("illum", 0.0f);
     m.emission = non_negative(p.get_color("Ke", Color()), "Ke");
   } else {

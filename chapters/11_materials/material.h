@@ -76,15 +76,17 @@ struct Material {
 /// matched without regard to case):
 ///   - Matte: reflectance (colour or texture);  MatteTextured: Kd (texture), s0, ds;
 ///   - Mirror: reflectance (or reflectivity);
-///   - Metal: eta, k (colours), roughness (0: polished);
+///   - Metal: eta, k (colours), roughness (0: polished), reflectance (a colour on the Fresnel term);
 ///   - Dielectric / Glass: etaInside, etaOutside, transmission;
 ///   - ThinDielectric / ThinGlass: eta, transmission, thickness;
 ///   - Plastic: pigmentColor, eta, roughness;
+///   - Velvet: reflectance (colour or texture), backScattering, horizonScatteringColor,
+///     horizonScatteringFallOff (velvet.h);
 ///   - MetallicPaint: shadeColor, eta (glitterColor and glitterSpread are not modelled:
 ///     a smooth-coated Plastic, with a warning);
 ///   - OBJ (the MTL keys): Kd or map_Kd; Ks > 0 becomes a Plastic whose roughness is 1 / Ns
-///     (a warning says that Ks's magnitude is replaced by the Fresnel term); d < 1, Tf and
-///     Ka are ignored with a warning; Ke is the emission.
+///     (a warning says that Ks's magnitude is replaced by the Fresnel term); d < 1 and Tf
+///     are ignored with a warning, Ka without one (as Embree 1.1 did); Ke is the emission.
 /// Any material may carry "emission" (a colour). An unknown name becomes a grey Matte, and
 /// every parameter that was not used is reported, both through `warn`. Invalid values (a
 /// negative index of refraction, a NaN) throw std::invalid_argument.

@@ -21,6 +21,7 @@ struct RoughConductor {
   Color eta{0.2f, 0.92f, 1.1f};
   Color k{3.9f, 2.45f, 2.14f};
   GgxDistribution ggx{0.1f};
+  Color reflectance{1.0f};  ///< Embree 1.1 Metal's colour, a factor on the Fresnel term
 
   Color eval(Vec3f wo, Vec3f wi) const {
     if (!same_hemisphere(wo, wi)) return {};
@@ -28,7 +29,7 @@ struct RoughConductor {
     const Vec3f m = normalize(wo + wi);
     const float denominator = 4.0f * wo.z * wi.z;
     if (denominator == 0.0f) return {};
-    return fresnel_conductor(dot(wo, m), eta, k) * (ggx.d(m) * ggx.g2(wo, wi) / denominator);
+    return reflectance * fresnel_conductor(dot(wo, m), eta, k) * (ggx.d(m) * ggx.g2(wo, wi) / denominator);
   }
 
   float pdf(Vec3f wo, Vec3f wi) const {
@@ -50,7 +51,7 @@ struct RoughConductor {
     if (wi.z <= 0.0f) return std::nullopt;  // reflected into the surface: the light is lost
     const float wo_m = dot(wo_up, m);
     if (!(wo_m > 0.0f)) return std::nullopt;
-    const Color fresnel = fresnel_conductor(wo_m, eta, k);
+    const Color fresnel = reflectance * fresnel_conductor(wo_m, eta, k);
     const Color f = fresnel * (ggx.d(m) * ggx.g2(wo_up, wi) / (4.0f * wo_up.z * wi.z));
     const float pdf = ggx.pdf_visible(wo_up, m) / (4.0f * wo_m);
     const Color weight = fresnel * (ggx.g2(wo_up, wi) / ggx.g1(wo_up));

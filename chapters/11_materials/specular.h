@@ -30,13 +30,14 @@ struct Mirror {
 struct SmoothConductor {
   Color eta{0.2f, 0.92f, 1.1f};  // gold-like defaults
   Color k{3.9f, 2.45f, 2.14f};
+  Color reflectance{1.0f};  ///< Embree 1.1 Metal's colour, a factor on the Fresnel term
 
   Color eval(Vec3f, Vec3f) const { return {}; }
   float pdf(Vec3f, Vec3f) const { return 0.0f; }
   std::optional<BsdfSample> sample(Vec3f wo, float, Vec2f) const {
     if (wo.z == 0.0f) return std::nullopt;
     const Vec3f wi = reflect_local(wo);
-    const Color f = fresnel_conductor(wo.z, eta, k);
+    const Color f = reflectance * fresnel_conductor(wo.z, eta, k);
     return BsdfSample{wi, f / std::fabs(wi.z), f, 1.0f, true};
   }
 };

@@ -41,6 +41,7 @@ std::vector<Case> cases() {
     c.push_back({"Plastic alpha=" + std::to_string(alpha).substr(0, 4),
                  Plastic{Color(0.5f, 0.3f, 0.2f), 1.5f, GgxDistribution{alpha}}});
   c.push_back({"Plastic smooth", Plastic{Color(0.5f, 0.3f, 0.2f), 1.5f, GgxDistribution{0.0f}}});
+  c.push_back({"Velvet", Velvet{Color(0.4f), 0.5f, Color(0.6f), 10.0f}});
   return c;
 }
 

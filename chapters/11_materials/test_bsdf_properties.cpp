@@ -28,6 +28,8 @@ std::vector<std::pair<std::string, BsdfModel>> all_models() {
       {"ThinDielectric", ThinDielectric{1.5f, Color(0.8f, 0.9f, 1.0f), 0.2f}},
       {"Plastic smooth", Plastic{Color(1.0f), 1.5f, GgxDistribution{0.0f}}},
       {"Plastic 0.3", Plastic{Color(1.0f), 1.5f, GgxDistribution{0.3f}}},
+      {"Velvet", Velvet{Color(0.5f, 0.3f, 0.2f), 0.5f, Color(0.5f, 0.6f, 0.7f), 10.0f}},
+      {"Velvet wide sheen", Velvet{Color(0.2f), 3.0f, Color(0.8f), 1.0f}},
   };
 }
 

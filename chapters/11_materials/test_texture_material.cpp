@@ -59,6 +59,31 @@ TEST_CASE("ch11: the repeat mode tiles the plane") {
   CHECK_THROWS_AS(ImageTexture(0, 1, {}), std::invalid_argument);
 }
 
+TEST_CASE("ch11: Embree 1.1's conventions: t = 0 is the top row, the nearest texel, 8-bit linear") {
+  const TextureConventions old = TextureConventions::embree11();
+  const ImageTexture t(2, 2, {Color(1, 0, 0), Color(0, 1, 0), Color(0, 0, 1), Color(1, 1, 1)},
+                       WrapMode::repeat, old.lookup, old.origin);
+  // (0.25, 0.25) is in the top-left texel now, and every point of a texel gives it unblended.
+  for (float du : {-0.24f, 0.0f, 0.24f})
+    for (float dv : {-0.24f, 0.0f, 0.24f}) {
+      CHECK(close(t.eval({0.25f + du, 0.25f + dv}), Color(1, 0, 0)));
+      CHECK(close(t.eval({0.75f + du, 0.25f + dv}), Color(0, 1, 0)));
+      CHECK(close(t.eval({0.25f + du, 0.75f + dv}), Color(0, 0, 1)));
+      CHECK(close(t.eval({0.75f + du, 0.75f + dv}), Color(1, 1, 1)));
+    }
+  // Coordinates wrap as before; the bottom origin's nearest lookup keeps v = 0 in the bottom row.
+  CHECK(close(t.eval({1.25f, -0.75f}), Color(1, 0, 0)));
+  const ImageTexture b(2, 2, {Color(1, 0, 0), Color(0, 1, 0), Color(0, 0, 1), Color(1, 1, 1)},
+                       WrapMode::repeat, TextureLookup::nearest, TextureOrigin::bottom);
+  CHECK(close(b.eval({0.0f, 0.0f}), Color(0, 0, 1)));
+  CHECK(close(b.eval({0.9f, 0.9f}), Color(0, 1, 0)));
+  // RTK's are today's conventions; Embree 1.1's read 8-bit values as linear.
+  CHECK(TextureConventions{}.encoding == ColorEncoding::srgb);
+  CHECK(old.encoding == ColorEncoding::linear);
+  CHECK(old.is_embree11());
+  CHECK_FALSE(TextureConventions{}.is_embree11());
+}
+
 TEST_CASE("ch11: image files load through lib/image's reader, decoded as asked") {
   // A 3 x 2 PNG of known bytes.
   const unsigned char bytes[] = {0,   64,  128, 255, 255, 255, 10,  20,  30,
@@ -158,6 +183,43 @@ TEST_CASE("ch11: materials are built from the Embree scene names") {
           doctest::Approx(roughness_to_alpha(0.005f)));
     p.set("roughness", 0.0f);
     CHECK(std::holds_alternative<SmoothConductor>(make_material("Metal", p, warn).prototype));
+    // Embree 1.1's reflectance colours the metal: every sample's weight scales by it.
+    const Material plain = make_material("Metal", p, warn);
+    p.set("reflectance", Color(0.5f, 0.25f, 1.0f));
+    const Material tinted = make_material("Metal", p, warn);
+    const Vec3f wo = normalize(Vec3f{0.3f, 0.2f, 0.9f});
+    const auto a = plain.make_bsdf(frame, {}).sample(wo, 0.5f, {0.3f, 0.7f});
+    const auto b = tinted.make_bsdf(frame, {}).sample(wo, 0.5f, {0.3f, 0.7f});
+    REQUIRE(a);
+    REQUIRE(b);
+    CHECK(close(b->weight, a->weight * Color(0.5f, 0.25f, 1.0f)));
+    p.set("roughness", 0.1f);
+    const Material rough_tinted = make_material("Metal", p, warn);
+    p.set("reflectance", Color(1.0f));
+    const Material rough_plain = make_material("Metal", p, warn);
+    const Vec3f wi = normalize(Vec3f{-0.2f, -0.1f, 0.95f});
+    CHECK(close(rough_tinted.make_bsdf(frame, {}).eval(wo, wi),
+                rough_plain.make_bsdf(frame, {}).eval(wo, wi) * Color(0.5f, 0.25f, 1.0f)));
+    CHECK(warnings.empty());
+  }
+  SUBCASE("Velvet: its parameters, and a texture for its reflectance") {
+    ParameterList p;
+    p.set("reflectance", Color(0.3f));
+    p.set("backScattering", 2.0f);
+    p.set("horizonScatteringColor", Color(0.5f, 0.6f, 0.7f));
+    p.set("horizonScatteringFallOff", 4.0f);
+    const Material m = make_material("Velvet", p, warn);
+    REQUIRE(std::holds_alternative<Velvet>(m.prototype));
+    const Velvet& v = std::get<Velvet>(m.prototype);
+    CHECK(v.reflectance == Color(0.3f));
+    CHECK(v.back_scattering == 2.0f);
+    CHECK(v.horizon == Color(0.5f, 0.6f, 0.7f));
+    CHECK(v.horizon_falloff == 4.0f);
+    ParameterList t;
+    t.set("reflectance", std::shared_ptr<const Texture>(std::make_shared<ImageTexture>(checker(WrapMode::clamp))));
+    const Material textured = make_material("Velvet", t, warn);
+    CHECK(close(std::get<Velvet>(textured.make_bsdf(frame, {0.25f, 0.75f}).model()).reflectance, Color(1, 0, 0)));
+    CHECK(warnings.empty());
   }
   SUBCASE("Glass and Dielectric take the ratio of the indices") {
     ParameterList p;
@@ -219,10 +281,10 @@ TEST_CASE("ch11: materials are built from the Embree scene names") {
     ParameterList p;
     p.set("reflectance", Color(0.5f));
     p.set("sheen", 0.3f);
-    const Material m = make_material("Velvet", p, warn);
+    const Material m = make_material("Velour", p, warn);
     CHECK(std::holds_alternative<Lambertian>(m.prototype));
     REQUIRE(warnings.size() == 3);  // the name, then both parameters
-    CHECK(warnings[0].find("Velvet") != std::string::npos);
+    CHECK(warnings[0].find("Velour") != std::string::npos);
     warnings.clear();
     make_material("Matte", p, warn);
     REQUIRE(warnings.size() == 1);

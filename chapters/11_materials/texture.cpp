@@ -8,8 +8,10 @@
 
 namespace rtk {
 
-ImageTexture::ImageTexture(int width, int height, std::vector<Color> texels, WrapMode wrap)
-    : width_(width), height_(height), texels_(std::move(texels)), wrap_(wrap) {
+ImageTexture::ImageTexture(int width, int height, std::vector<Color> texels, WrapMode wrap,
+                           TextureLookup lookup, TextureOrigin origin)
+    : width_(width), height_(height), texels_(std::move(texels)), wrap_(wrap), lookup_(lookup),
+      origin_(origin) {
   if (width <= 0 || height <= 0 ||
       texels_.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
     throw std::invalid_argument("ImageTexture: " + std::to_string(texels_.size()) +
@@ -47,7 +49,14 @@ Color ImageTexture::eval(Vec2f uv) const {
     u = std::clamp(u, -1.0f, 2.0f);
     v = std::clamp(v, -1.0f, 2.0f);
   }
-  const float x = u * width_ - 0.5f, y = (1.0f - v) * height_ - 0.5f;
+  // The image row coordinate: from the top, which is v = 1 in the OBJ convention, v = 0 in
+  // Embree 1.1's.
+  const float row = origin_ == TextureOrigin::bottom ? 1.0f - v : v;
+  if (lookup_ == TextureLookup::nearest)
+    // row reaches 1 at v = 0 with the bottom origin: that point belongs to the last row.
+    return texel(static_cast<int>(std::floor(u * width_)),
+                 std::min(static_cast<int>(std::floor(row * height_)), height_ - 1));
+  const float x = u * width_ - 0.5f, y = row * height_ - 0.5f;
   const float fx = std::floor(x), fy = std::floor(y);
   const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
   const float tx = x - fx, ty = y - fy;
@@ -62,8 +71,14 @@ float srgb_to_linear(float c) {
 }
 
 // [ch11-load-texture]
+std::shared_ptr<ImageTexture> load_image_texture(const std::string& path,
+                                                 const TextureConventions& conventions, WrapMode wrap) {
+  return load_image_texture(path, conventions.encoding, wrap, conventions.lookup, conventions.origin);
+}
+
 std::shared_ptr<ImageTexture> load_image_texture(const std::string& path, ColorEncoding encoding,
-                                                 WrapMode wrap) {
+                                                 WrapMode wrap, TextureLookup lookup,
+                                                 TextureOrigin origin) {
   // lib/image's bounded reader: a damaged or truncated file is an error naming it, never a
   // hang or a texture of whatever memory held.
   DecodedImage file = read_image_file(path);
@@ -82,7 +97,7 @@ std::shared_ptr<ImageTexture> load_image_texture(const std::string& path, ColorE
     for (Color& c : file.image.pixels) c = {decode(c.r), decode(c.g), decode(c.b)};
   }
   return std::make_shared<ImageTexture>(file.image.width, file.image.height,
-                                        std::move(file.image.pixels), wrap);
+                                        std::move(file.image.pixels), wrap, lookup, origin);
 }
 // [ch11-load-texture]
 

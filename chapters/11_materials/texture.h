@@ -45,15 +45,51 @@ enum class ColorEncoding {
   linear,  ///< values are linear already (data maps)
 };
 
-/// An image looked up with bilinear interpolation between texel centres. Texture coordinate
-/// (0, 0) is the bottom-left corner of the image and (1, 1) the top-right (the OBJ
-/// convention); texel (x, y) with y = 0 the top row covers [x, x+1] / width by
-/// [h - y - 1, h - y] / height.
+/// How an image is read between its texel centres.
+enum class TextureLookup {
+  bilinear,  ///< the four nearest texels blended (RTK)
+  nearest,   ///< the texel the point falls in (Embree 1.1)
+};
+
+/// Which row of the image texture coordinate v = 0 names.
+enum class TextureOrigin {
+  bottom,  ///< v = 0 is the bottom row, v grows upward (the OBJ convention; RTK)
+  top,     ///< v = 0 is the top row, the first in the file (Embree 1.1)
+};
+
+// [ch11-texture-conventions]
+/// The conventions a scene's image files were made for. RTK's are today's: the OBJ
+/// convention's origin, bilinear lookups and 8-bit files decoded from sRGB. Embree 1.1's
+/// scenes were made for its own: t = 0 the image's top row, the nearest texel, and 8-bit
+/// values read as linear (so that its lines.ppm gives twice the light an sRGB decoding gives).
+struct TextureConventions {
+  TextureLookup lookup = TextureLookup::bilinear;
+  TextureOrigin origin = TextureOrigin::bottom;
+  ColorEncoding encoding = ColorEncoding::srgb;  ///< of 8- and 16-bit files
+  /// Embree 1.1's environment maps (chapter 12) are mirrored against RTK's and interpolated.
+  bool embree11_environment = false;
+
+  /// Embree 1.1's conventions.
+  static TextureConventions embree11() {
+    return {TextureLookup::nearest, TextureOrigin::top, ColorEncoding::linear, true};
+  }
+  /// Whether these are Embree 1.1's.
+  bool is_embree11() const { return embree11_environment; }
+};
+// [ch11-texture-conventions]
+
+/// An image looked up between texel centres by `lookup`. With the bottom origin texture
+/// coordinate (0, 0) is the bottom-left corner of the image and (1, 1) the top-right (the OBJ
+/// convention): texel (x, y) with y = 0 the top row covers [x, x+1] / width by
+/// [h - y - 1, h - y] / height; with the top origin (0, 0) is the top-left corner and texel
+/// (x, y) covers [x, x+1] / width by [y, y + 1] / height.
 class ImageTexture final : public Texture {
  public:
   /// An image of width x height linear colours, top row first; throws std::invalid_argument
   /// for a non-positive size or a texel count that does not match.
-  ImageTexture(int width, int height, std::vector<Color> texels, WrapMode wrap = WrapMode::repeat);
+  ImageTexture(int width, int height, std::vector<Color> texels, WrapMode wrap = WrapMode::repeat,
+               TextureLookup lookup = TextureLookup::bilinear,
+               TextureOrigin origin = TextureOrigin::bottom);
 
   Color eval(Vec2f uv) const override;
   /// The texel at column x and row y (top row 0), after wrapping.
@@ -67,6 +103,8 @@ class ImageTexture final : public Texture {
   int width_, height_;
   std::vector<Color> texels_;
   WrapMode wrap_;
+  TextureLookup lookup_;
+  TextureOrigin origin_;
 };
 
 /// Another texture seen through an affine map of its coordinates: eval(uv) =
@@ -92,6 +130,13 @@ float srgb_to_linear(float encoded);
 /// file and the reason when it cannot be read or is not a complete, valid image.
 std::shared_ptr<ImageTexture> load_image_texture(const std::string& path,
                                                  ColorEncoding encoding = ColorEncoding::srgb,
+                                                 WrapMode wrap = WrapMode::repeat,
+                                                 TextureLookup lookup = TextureLookup::bilinear,
+                                                 TextureOrigin origin = TextureOrigin::bottom);
+
+/// load_image_texture with the encoding, lookup and origin of `conventions`.
+std::shared_ptr<ImageTexture> load_image_texture(const std::string& path,
+                                                 const TextureConventions& conventions,
                                                  WrapMode wrap = WrapMode::repeat);
 
 }  // namespace rtk

@@ -34,19 +34,46 @@ std::vector<float> texel_weights(const ImageTexture& image) {
 }
 // [ch12-environment-weights]
 
-Distribution2D make_distribution(const std::shared_ptr<const ImageTexture>& image) {
+// [ch12-environment-dilate]
+// Under bilinear interpolation a texel's radiance reaches halfway into its neighbours, so a
+// black texel beside a bright one has light near its border. Each texel is weighed by the
+// brightest of itself and its eight neighbours (the azimuth wraps, the rows stop at the
+// poles), which gives every lit direction a density.
+std::vector<float> dilate(const std::vector<float>& weights, int w, int h) {
+  std::vector<float> out(weights.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      float m = 0.0f;
+      for (int dy = -1; dy <= 1; ++dy) {
+        const int yy = std::clamp(y + dy, 0, h - 1);
+        const float sin_ratio = std::sin(kPi * (y + 0.5f) / h) / std::sin(kPi * (yy + 0.5f) / h);
+        for (int dx = -1; dx <= 1; ++dx)
+          m = std::max(m, weights[static_cast<std::size_t>(yy) * w + (x + dx + w) % w] * sin_ratio);
+      }
+      out[static_cast<std::size_t>(y) * w + x] = m;
+    }
+  return out;
+}
+// [ch12-environment-dilate]
+
+Distribution2D make_distribution(const std::shared_ptr<const ImageTexture>& image,
+                                 EnvironmentMapping mapping) {
   if (!image) throw std::invalid_argument("environment light without an image");
-  return Distribution2D(texel_weights(*image), image->width(), image->height());
+  std::vector<float> weights = texel_weights(*image);
+  if (mapping == EnvironmentMapping::embree11)
+    weights = dilate(weights, image->width(), image->height());
+  return Distribution2D(weights, image->width(), image->height());
 }
 
 }  // namespace
 
 EnvironmentLight::EnvironmentLight(std::shared_ptr<const ImageTexture> image, Color scale,
-                                   const Frame& frame)
+                                   const Frame& frame, EnvironmentMapping mapping)
     : image_(std::move(image)),
       scale_(scale),
       frame_(frame),
-      distribution_(make_distribution(image_)) {
+      mapping_(mapping),
+      distribution_(make_distribution(image_, mapping)) {
   if (!is_finite(scale) || scale.r < 0 || scale.g < 0 || scale.b < 0)
     throw std::invalid_argument("environment light scale must be finite and >= 0");
 }
@@ -54,11 +81,14 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const ImageTexture> image, Co
 Vec3f EnvironmentLight::direction(Vec2f uv) const {
   const float theta = uv.y * kPi, phi = uv.x * 2.0f * kPi;
   const float s = std::sin(theta);
-  return frame_.to_world(map_to_frame({s * std::cos(phi), std::cos(theta), s * std::sin(phi)}));
+  // Embree 1.1's azimuth runs from +x toward -z: the same map, mirrored.
+  const float z = mapping_ == EnvironmentMapping::embree11 ? -s * std::sin(phi) : s * std::sin(phi);
+  return frame_.to_world(map_to_frame({s * std::cos(phi), std::cos(theta), z}));
 }
 
 Vec2f EnvironmentLight::coordinates(Vec3f w) const {
-  const Vec3f d = frame_to_map(frame_.to_local(w));
+  Vec3f d = frame_to_map(frame_.to_local(w));
+  if (mapping_ == EnvironmentMapping::embree11) d.z = -d.z;
   // atan2 rather than acos: near the poles acos(y) has lost the angle to rounding.
   const float theta = std::atan2(std::sqrt(d.x * d.x + d.z * d.z), d.y);
   float phi = std::atan2(d.z, d.x);
@@ -69,6 +99,17 @@ Vec2f EnvironmentLight::coordinates(Vec3f w) const {
 Color EnvironmentLight::le(Vec3f wi) const {
   if (!is_finite(wi)) return {};
   const Vec2f uv = coordinates(wi);
+  if (mapping_ == EnvironmentMapping::embree11) {
+    // Bilinear between texel centres: the azimuth wraps around, the rows stop at the poles.
+    const int w = image_->width(), h = image_->height();
+    const float x = uv.x * w - 0.5f, y = uv.y * h - 0.5f;
+    const float fx = std::floor(x), fy = std::floor(y), tx = x - fx, ty = y - fy;
+    const int x0 = (static_cast<int>(fx) + w) % w, x1 = (x0 + 1) % w;
+    const int y0 = std::clamp(static_cast<int>(fy), 0, h - 1), y1 = std::clamp(static_cast<int>(fy) + 1, 0, h - 1);
+    const Color c = (image_->texel(x0, y0) * (1 - tx) + image_->texel(x1, y0) * tx) * (1 - ty) +
+                    (image_->texel(x0, y1) * (1 - tx) + image_->texel(x1, y1) * tx) * ty;
+    return c * scale_;
+  }
   const int x = std::min(static_cast<int>(uv.x * image_->width()), image_->width() - 1);
   const int y = std::min(static_cast<int>(uv.y * image_->height()), image_->height() - 1);
   return image_->texel(x, y) * scale_;
@@ -110,8 +151,9 @@ Color EnvironmentLight::power(float scene_radius) const {
   return total * scale_ * (kPi * scene_radius * scene_radius);
 }
 
-std::shared_ptr<const ImageTexture> load_environment_image(const std::string& path) {
-  return load_image_texture(path, ColorEncoding::srgb, WrapMode::repeat);
+std::shared_ptr<const ImageTexture> load_environment_image(const std::string& path,
+                                                           ColorEncoding encoding) {
+  return load_image_texture(path, encoding, WrapMode::repeat);
 }
 
 }  // namespace rtk

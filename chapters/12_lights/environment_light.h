@@ -26,13 +26,21 @@ namespace rtk {
 /// luminance * sin(theta) (a texel near a pole covers less of the sphere) and a direction
 /// uniformly in it; the (u, v) density p(u, v) becomes p(u, v) / (2 pi^2 sin theta) per solid
 /// angle, the Jacobian of (u, v) = (phi / 2 pi, theta / pi).
+/// How directions meet the map. RTK's mapping is the one above, looked up without
+/// interpolation. Embree 1.1's runs the azimuth the other way round (the map seen mirrored
+/// left to right: phi from +x toward -z) and interpolates bilinearly between texel centres;
+/// its sampling distribution then weighs each texel by the brightest of its neighbours, so
+/// that every direction with radiance can be sampled.
+enum class EnvironmentMapping { rtk, embree11 };
+
 class EnvironmentLight final : public Light {
  public:
   /// A light from an image (linear radiance), scaled by `scale` (the guide's r g b), seen
   /// through `frame` (the light's axes in world space: frame.s, frame.n, frame.t are the
   /// map's x, y, z). Throws std::invalid_argument for a negative or non-finite texel or scale.
   EnvironmentLight(std::shared_ptr<const ImageTexture> image, Color scale,
-                   const Frame& frame = Frame({1, 0, 0}, {0, 0, 1}, {0, 1, 0}));
+                   const Frame& frame = Frame({1, 0, 0}, {0, 0, 1}, {0, 1, 0}),
+                   EnvironmentMapping mapping = EnvironmentMapping::rtk);
 
   std::optional<LightSample> sample_li(const LightQuery& q, Vec2f u) const override;
   float pdf_li(const LightQuery& q, Vec3f wi) const override;
@@ -50,13 +58,16 @@ class EnvironmentLight final : public Light {
   std::shared_ptr<const ImageTexture> image_;
   Color scale_;
   Frame frame_;  // s: map x, t: map z, n: map y (up)
+  EnvironmentMapping mapping_;
   Distribution2D distribution_;
 };
 // [ch12-environment]
 
 /// Loads the image of an environment light from a file (Radiance .hdr for real HDR maps;
-/// 8-bit files are sRGB-decoded, as the guide's lines.ppm needs), through chapter 11's
-/// load_image_texture. Throws std::runtime_error naming the file when it cannot be read.
-std::shared_ptr<const ImageTexture> load_environment_image(const std::string& path);
+/// 8-bit files are decoded as `encoding` says: sRGB by RTK's conventions, linear by Embree
+/// 1.1's), through chapter 11's load_image_texture. Throws std::runtime_error naming the file
+/// when it cannot be read.
+std::shared_ptr<const ImageTexture> load_environment_image(const std::string& path,
+                                                           ColorEncoding encoding = ColorEncoding::srgb);
 
 }  // namespace rtk

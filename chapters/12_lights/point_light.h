@@ -54,6 +54,57 @@ class PointLight final : public Light {
 };
 // [ch12-point]
 
+// [ch12-spot]
+/// A point light that shines into a cone (the -spotlight px py pz dx dy dz r g b angleMin
+/// angleMax of Embree 2's scripts, Embree 1.1's SpotLight): full intensity I within angleMin
+/// degrees of its axis, none beyond angleMax, and between the two a falloff linear in the
+/// cosine of the angle, so that the light fades smoothly at the cone's edge. The angles are
+/// half-angles, from the axis to the cone's side.
+class SpotLight final : public Light {
+ public:
+  /// A spot at `position` pointing along `direction`, with intensity `intensity` (W/sr) inside
+  /// `inner_degrees` and none outside `outer_degrees` (0 <= inner <= outer <= 180).
+  SpotLight(Vec3f position, Vec3f direction, Color intensity, float inner_degrees, float outer_degrees)
+      : position_(position),
+        axis_(detail::checked_direction(direction, "spot light direction")),
+        intensity_(detail::checked_radiance(intensity, "spot light intensity")) {
+    if (!is_finite(position)) throw std::invalid_argument("spot light position must be finite");
+    if (!(inner_degrees >= 0.0f && inner_degrees <= outer_degrees && outer_degrees <= 180.0f))
+      throw std::invalid_argument("spot light angles must satisfy 0 <= angleMin <= angleMax <= 180 degrees");
+    cos_inner_ = std::cos(inner_degrees * kPi / 180.0f);
+    cos_outer_ = std::cos(outer_degrees * kPi / 180.0f);
+  }
+  /// The fraction of the intensity emitted along the unit direction `w` (away from the light).
+  float falloff(Vec3f w) const {
+    const float c = dot(axis_, w);
+    if (c >= cos_inner_) return 1.0f;
+    if (c <= cos_outer_) return 0.0f;
+    return (c - cos_outer_) / (cos_inner_ - cos_outer_);
+  }
+  std::optional<LightSample> sample_li(const LightQuery& q, Vec2f) const override {
+    const Vec3f d = position_ - q.p;
+    const float d2 = dot(d, d);
+    if (!(d2 > 0.0f) || !std::isfinite(d2)) return std::nullopt;
+    const float dist = std::sqrt(d2);
+    const float f = falloff(-d / dist);
+    if (!(f > 0.0f)) return std::nullopt;
+    return LightSample{d / dist, intensity_ * (f / d2), 1.0f, dist, true};
+  }
+  float pdf_li(const LightQuery&, Vec3f) const override { return 0.0f; }
+  /// I times the solid angle the falloff weighs: with c = cos(theta), the integral of the
+  /// falloff over the sphere is 2 pi (1 - c_inner + (c_inner - c_outer) / 2).
+  Color power(float) const override {
+    return intensity_ * (2.0f * kPi * (1.0f - 0.5f * (cos_inner_ + cos_outer_)));
+  }
+  bool is_delta() const override { return true; }
+
+ private:
+  Vec3f position_, axis_;
+  Color intensity_;
+  float cos_inner_ = 1.0f, cos_outer_ = 1.0f;
+};
+// [ch12-spot]
+
 /// Light from infinitely far away in one direction (the guide's -directionallight dx dy dz
 /// r g b): `direction` is the way the light travels, `irradiance` what a surface facing it
 /// receives.

@@ -103,6 +103,58 @@ TEST_CASE("ch12: the environment frame rotates the map and coordinates invert di
     }
 }
 
+TEST_CASE("ch12: Embree 1.1's environment mapping is RTK's mirrored, and interpolated") {
+  const EnvironmentLight rtk_map(test_map(), Color(1));
+  const EnvironmentLight old(test_map(), Color(1), Frame({1, 0, 0}, {0, 0, 1}, {0, 1, 0}),
+                             EnvironmentMapping::embree11);
+  Pcg32 rng(11);
+  for (int i = 0; i < 200; ++i) {
+    const Vec3f w = sample_uniform_sphere({rng.next_float(), rng.next_float()});
+    // The same direction mirrored in z (the map's azimuth runs the other way) has RTK's
+    // coordinates; and coordinates still invert directions.
+    const Vec2f a = old.coordinates(w), b = rtk_map.coordinates({w.x, w.y, -w.z});
+    CHECK(a.x == doctest::Approx(b.x).epsilon(1e-4));
+    CHECK(a.y == doctest::Approx(b.y).epsilon(1e-4));
+    CHECK(length(old.direction(a) - w) < 1e-4f);
+  }
+  // At a texel centre the texel itself; halfway between two centres of a row, their mean.
+  const auto map = test_map();
+  const Vec3f centre = old.direction({(10 + 0.5f) / 40, (7 + 0.5f) / 20});
+  CHECK(length(Vec3f(old.le(centre).r, old.le(centre).g, old.le(centre).b) -
+               Vec3f(map->texel(10, 7).r, map->texel(10, 7).g, map->texel(10, 7).b)) < 1e-4f);
+  const Color half = old.le(old.direction({11.0f / 40, (7 + 0.5f) / 20}));
+  const Color mean = (map->texel(10, 7) + map->texel(11, 7)) * 0.5f;
+  CHECK(half.r == doctest::Approx(mean.r).epsilon(1e-3));
+  // Light reaches into the black band's border, and the dilated distribution samples it there.
+  const Vec3f edge = old.direction({0.5f, 12.1f / 20});
+  CHECK(luminance(old.le(edge)) > 0.0f);
+  CHECK(old.pdf_li({}, edge) > 0.0f);
+  CHECK(rtk_map.le(rtk_map.direction({0.5f, 12.1f / 20})) == Color());
+}
+
+TEST_CASE("ch12: Embree 1.1's interpolated map, light-sampled, integrates to its radiance") {
+  // The estimate E[le / pdf] over light samples must equal the radiance integrated over the
+  // sphere, found here by a fine midpoint rule: it checks that the dilated distribution covers
+  // every direction with light (a gap would lose energy).
+  const EnvironmentLight old(test_map(), Color(1), kZUp, EnvironmentMapping::embree11);
+  double reference = 0;
+  const int nu = 800, nv = 400;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const float theta = kPi * (j + 0.5f) / nv, phi = 2 * kPi * (i + 0.5f) / nu;
+      const Vec3f w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+      reference += luminance(old.le(w)) * std::sin(theta) * (kPi / nv) * (2 * kPi / nu);
+    }
+  Pcg32 rng(12);
+  double sum = 0;
+  const int n = 400000;
+  for (int k = 0; k < n; ++k) {
+    const auto s = old.sample_li({}, {rng.next_float(), rng.next_float()});
+    if (s) sum += luminance(s->L) / s->pdf;
+  }
+  CHECK(sum / n == doctest::Approx(reference).epsilon(0.02));
+}
+
 TEST_CASE("ch12: environment power, black maps and bad input") {
   // A constant map is the ambient light: power 4 pi^2 r^2 L.
   const auto grey = std::make_shared<ImageTexture>(8, 4, std::vector<Color>(32, Color(0.5f)));

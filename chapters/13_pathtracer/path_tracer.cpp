@@ -33,6 +33,7 @@ constexpr float kShadowShortening = 1.0f - 1e-4f;
 struct PathTracer::Path {
   Sampler sampler{SamplerType::sobol, 0};
   int x = 0, y = 0;
+  Vec2f film;  // the camera sample's film position, for the backplate
   float filter_weight = 1.0f;
   Color throughput{1.0f};
   Color radiance;
@@ -98,6 +99,14 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
                        uint32_t index) const {
   const Vec3f dir = normalize(ray.dir);
   if (!hit.found()) {
+    // [ch13-backplate]
+    // A camera ray that meets nothing sees the backplate, where there is one, at its film
+    // position (film y grows downward, texture v upward).
+    if (path.depth == 0 && scene_.backplate) {
+      path.radiance += path.throughput * scene_.backplate->eval({path.film.x, 1.0f - path.film.y});
+      return;
+    }
+    // [ch13-backplate]
     path.radiance += path.throughput * escaped(path, dir);
     return;
   }
@@ -200,6 +209,8 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   if (!bs || is_black(bs->weight) || !is_finite(bs->weight)) return;
   if (!bsdf.transmissive() && dot(bs->wi, ng_wo) <= 0.0f) return;
   path.throughput *= bs->weight;
+  // Embree 1.1's minContribution: a path that can add little any more ends (biased).
+  if (max_component(path.throughput) < options_.min_contribution) return;
   path.prev_pdf = bs->pdf;
   path.prev_delta = bs->delta;
   path.prev_p = p;
@@ -250,6 +261,7 @@ void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t c
       const Vec2f lens = path.sampler.get_2d();
       const float time = path.sampler.get_1d();
       path.filter_weight = fs.weight;
+      path.film = film;
       path.ray = camera_.generate_ray(film, lens, time);
       live.push_back(static_cast<uint32_t>(i));
     }

@@ -30,6 +30,10 @@ struct RenderOptions {
   /// adds direct lighting, 2 one bounce of indirect light, and so on.
   int max_depth = 10;
   int rr_depth = 3;          ///< Russian roulette starts after this many scattering events
+  /// Embree 1.1's minContribution: a path whose throughput (its largest component) falls below
+  /// this after a bounce ends there. 0, the default, never ends a path early; above 0 the
+  /// image loses the light of the ended paths (a bias Embree 1.1 traded for speed).
+  float min_contribution = 0.0f;
   uint32_t seed = 0;         ///< selects another, equally good image
   int threads = 0;           ///< worker threads; 0 for every core
   int tile_size = 16;        ///< tile side in pixels

@@ -44,6 +44,11 @@ struct RenderScene {
   std::vector<Material> materials;          ///< chapter 11's materials
   std::vector<std::shared_ptr<const Light>> lights;  ///< chapter 12's lights
   CameraParams camera;  ///< the view; its aspect is replaced by the image's width / height
+  /// Embree 1.1's backplate: an image behind the scene, which camera rays that hit nothing see
+  /// instead of the lights at infinity (texture (0, 0) is the image's bottom-left corner and
+  /// (1, 1) its top-right, stretched over the frame). Null: none. Reflections and refractions
+  /// still see the lights.
+  std::shared_ptr<const ImageTexture> backplate;
 
   /// Whether any vertex moves during the shutter interval.
   bool has_motion() const { return !vertices_t1.empty(); }

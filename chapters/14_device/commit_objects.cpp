@@ -216,6 +216,9 @@ std::shared_ptr<const Version> build_camera(const Object& o, const ParamReader& 
   c.look_at = p.get_vec3("lookAt", c.look_at);
   c.up = p.get_vec3("up", c.up);
   c.fov_degrees = p.get_float("fov", c.fov_degrees);
+  const int handed = p.get_int("rightHanded", 0);
+  if (handed != 0 && handed != 1) p.fail("rightHanded", "must be 0 (left-handed, Embree 1.1) or 1");
+  c.right_handed = handed == 1;
   if (o.type == "thinlens") {
     c.lens_radius = p.get_float("radius", c.lens_radius);
     c.focal_distance = p.get_float("focalDistance", c.focal_distance);
@@ -443,6 +446,7 @@ std::shared_ptr<const Version> build_renderer(const Object& o, const ParamReader
   } else {
     r.max_depth = p.get_int("maxDepth", r.max_depth);
     r.rr_depth = p.get_int("rrDepth", r.rr_depth);
+    r.min_contribution = p.get_float("minContribution", r.min_contribution);
   }
   try {
     if (p.has("sampler")) r.sampler = parse_sampler_type(p.get_string("sampler", ""));
@@ -460,6 +464,8 @@ std::shared_ptr<const Version> build_renderer(const Object& o, const ParamReader
   if (r.spp < 1) p.fail("spp", "must be at least 1");
   if (r.max_depth < 0) p.fail("maxDepth", "must not be negative");
   if (r.rr_depth < 0) p.fail("rrDepth", "must not be negative");
+  if (!(r.min_contribution >= 0.0f && std::isfinite(r.min_contribution)))
+    p.fail("minContribution", "must be a finite number, 0 or more");
   if (r.threads < 0) p.fail("threads", "must be 0 (every core) or more");
   if (r.tile_size < 1) p.fail("tileSize", "must be at least 1");
   if (r.filter_radius < 0) p.fail("filterRadius", "must not be negative");

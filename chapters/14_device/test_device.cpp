@@ -399,11 +399,11 @@ TEST_CASE("ch14: parameter errors name the object and the parameter") {
 TEST_CASE("ch14: materials warn as the scene files do, and spheres follow Embree's tessellation") {
   std::vector<std::string> warnings;
   Device d([&](const std::string& w) { warnings.push_back(w); });
-  const Handle m = d.new_material("Velvet");
+  const Handle m = d.new_material("Velour");
   d.set(m, "softness", 0.5);
   d.commit(m);
   REQUIRE(warnings.size() >= 1);
-  CHECK(warnings[0].find("material #1 'Velvet'") != std::string::npos);
+  CHECK(warnings[0].find("material #1 'Velour'") != std::string::npos);
 
   const rtk::SphereMesh s = rtk::tessellate_sphere({1, 2, 3}, 2.0f, 5, 7);
   CHECK(s.vertices.size() == 6u * 7u);

@@ -29,6 +29,7 @@ OrbitCamera OrbitCamera::from_params(const CameraParams& p) {
   c.fov_degrees = p.fov_degrees;
   c.lens_radius = p.lens_radius;
   c.focal_distance = p.focal_distance;
+  c.right_handed = p.right_handed;
   return c;
 }
 
@@ -41,11 +42,15 @@ CameraParams OrbitCamera::to_params(float aspect) const {
   p.aspect = aspect;
   p.lens_radius = lens_radius;
   p.focal_distance = focal_distance;
+  p.right_handed = right_handed;
   return p;
 }
 
 Vec3f OrbitCamera::forward() const { return normalize(centre - eye); }
-Vec3f OrbitCamera::right() const { return normalize(cross(up, forward())); }
+Vec3f OrbitCamera::right() const {
+  const Vec3f u = normalize(cross(up, forward()));
+  return right_handed ? -u : u;
+}
 float OrbitCamera::distance() const { return length(centre - eye); }
 
 // [ch15-rotate]
@@ -67,7 +72,8 @@ void OrbitCamera::rotate(float azimuth, float elevation) {
 void OrbitCamera::pan(float dx, float dy) {
   // One image height at the centre's depth, in world units.
   const float height = 2.0f * distance() * std::tan(0.5f * fov_degrees * kDegree);
-  const Vec3f u = right(), v = cross(forward(), u);
+  // The image's up is the same in both conventions (chapter 10); its right is right().
+  const Vec3f u = right(), v = cross(forward(), normalize(cross(up, forward())));
   // The camera moves against the gesture, so the scene follows the mouse.
   const Vec3f delta = (u * dx + v * dy) * -height;
   eye += delta;
@@ -124,9 +130,9 @@ std::string OrbitCamera::to_ecs_options() const {
   char buffer[512];
   std::snprintf(buffer, sizeof buffer,
                 "-vp %.9g %.9g %.9g -vi %.9g %.9g %.9g -vu %.9g %.9g %.9g -fov %.9g -radius %.9g "
-                "-focaldistance %.9g",
+                "-focaldistance %.9g %s",
                 eye.x, eye.y, eye.z, centre.x, centre.y, centre.z, up.x, up.y, up.z, fov_degrees,
-                lens_radius, focal_distance);
+                lens_radius, focal_distance, right_handed ? "-righthanded" : "-lefthanded");
   return buffer;
 }
 

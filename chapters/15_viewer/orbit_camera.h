@@ -25,6 +25,7 @@ struct OrbitCamera {
   float fov_degrees = 64.0f;  ///< the vertical field of view (-fov)
   float lens_radius = 0.0f;   ///< the lens radius (-radius); 0 is a pinhole
   float focal_distance = 0;   ///< the distance of the plane in focus (-focaldistance); 0: |centre - eye|
+  bool right_handed = false;  ///< the image mirrored left to right (-righthanded, chapter 10)
 
   /// The orbit camera of a scene's camera parameters (their aspect is not part of the state).
   static OrbitCamera from_params(const CameraParams& params);
@@ -33,7 +34,8 @@ struct OrbitCamera {
 
   /// The unit view direction, from the eye to the centre.
   Vec3f forward() const;
-  /// The unit right axis of the image (chapter 10's U = normalize(cross(up, forward))).
+  /// The unit right axis of the image (chapter 10's U = normalize(cross(up, forward)), or -U
+  /// for a right-handed camera).
   Vec3f right() const;
   /// The distance from the eye to the centre of interest.
   float distance() const;
@@ -72,7 +74,7 @@ struct OrbitCamera {
   bool focus_on(Vec3f point);
 
   /// The guide's command-script options that reproduce this camera: "-vp x y z -vi x y z
-  /// -vu x y z -fov f -radius r -focaldistance d", with enough digits that reading them back
+  /// -vu x y z -fov f -radius r -focaldistance d" and -righthanded or -lefthanded, with enough digits that reading them back
   /// gives exactly the same floats.
   std::string to_ecs_options() const;
 };

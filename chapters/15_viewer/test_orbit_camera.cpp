@@ -84,6 +84,22 @@ TEST_CASE("ch15: pan keeps the view direction and moves by image heights") {
   CHECK(near(o.forward(), dir, 1e-5f));
 }
 
+TEST_CASE("ch15: a right-handed orbit camera pans with its mirrored image") {
+  // The image's right is -x here (chapter 10): a drag to the right still drags the scene along.
+  OrbitCamera c;
+  c.eye = {0, 0, -10};
+  c.centre = {0, 0, 0};
+  c.fov_degrees = 90;
+  c.right_handed = true;
+  c.pan(0.25f, 0.5f);
+  CHECK(near(c.eye, {5, -10, -10}, 1e-4f));
+  // The scene point under the image's right edge is where the camera's own right column looks.
+  const Ray r = c.ray_through({1.0f, 0.5f}, 1.0f);
+  CHECK(r.dir.x < 0.0f);
+  CHECK(c.to_params(1.0f).right_handed);
+  CHECK(OrbitCamera::from_params(c.to_params(1.0f)).right_handed);
+}
+
 TEST_CASE("ch15: dolly keeps the centre, scales the distance and reverses exactly") {
   OrbitCamera c = oblique();
   const OrbitCamera start = c;

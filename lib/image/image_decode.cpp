@@ -43,6 +43,7 @@ DecodedImage decode_image(std::string_view bytes, const std::string& name) {
   if (bytes.starts_with("#?")) return decode_radiance_hdr(bytes, name);
   if (bytes.starts_with("\x89PNG\r\n\x1a\n")) return decode_png(bytes, name);
   if (bytes.starts_with("\xFF\xD8\xFF")) return decode_jpeg(bytes, name);
+  if (bytes.starts_with(std::string_view("\x76\x2F\x31\x01", 4))) return decode_exr(bytes, name);
   if (bytes.size() >= 3 && (bytes.starts_with("PF") || bytes.starts_with("Pf")) &&
       is_blank(bytes[2]))
     return decode_pfm(bytes, name);
@@ -50,7 +51,7 @@ DecodedImage decode_image(std::string_view bytes, const std::string& name) {
       is_blank(bytes[2]))
     return decode_pnm(bytes, name);
   if (has_extension(name, ".tga")) return decode_tga(bytes, name);
-  fail(name, "not an image RTK reads (PNG, JPEG, TGA, binary PPM or PGM, Radiance HDR, PFM)");
+  fail(name, "not an image RTK reads (PNG, JPEG, TGA, binary PPM or PGM, Radiance HDR, PFM, OpenEXR)");
 }
 // [image-decode]
 

@@ -11,7 +11,8 @@
 ///   bits): RTK's own readers;
 /// - TGA (true colour, grey and colour-mapped, plain or run-length encoded): RTK's own reader;
 /// - PNG through libpng and JPEG through libjpeg(-turbo), maintained and bounds-checked
-///   decoders; a JPEG that libjpeg would patch up with a warning (a premature end) is refused.
+///   decoders; a JPEG that libjpeg would patch up with a warning (a premature end) is refused;
+/// - OpenEXR (magic 76 2F 31 01) through the OpenEXR library, from memory: linear floats.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,7 @@ struct DecodedImage {
   /// The pixels, top row first. 8- and 16-bit formats give their stored values divided by their
   /// maximum (still display-encoded); HDR and PFM give linear floats.
   Image image;
-  /// True for the floating-point formats (HDR, PFM), whose values are linear radiance.
+  /// True for the floating-point formats (HDR, PFM, EXR), whose values are linear radiance.
   bool linear = false;
 };
 

@@ -34,5 +34,8 @@ DecodedImage decode_tga(std::string_view bytes, const std::string& name);
 DecodedImage decode_png(std::string_view bytes, const std::string& name);
 /// JPEG through libjpeg.
 DecodedImage decode_jpeg(std::string_view bytes, const std::string& name);
+/// OpenEXR through the OpenEXR library: R, G, B (or Y) as linear floats, whatever their
+/// stored type (half, float, uint) and compression.
+DecodedImage decode_exr(std::string_view bytes, const std::string& name);
 
 }  // namespace rtk::image_detail

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "image/image_decode.h"
+#include "image/image_exr.h"
 #include "io/read_file.h"
 
 namespace rtk {
@@ -76,9 +77,10 @@ ImageFormat image_format_from_path(const std::string& path) {
   if (ext == ".ppm") return ImageFormat::ppm;
   if (ext == ".hdr") return ImageFormat::hdr;
   if (ext == ".pfm") return ImageFormat::pfm;
+  if (ext == ".exr") return ImageFormat::exr;
   throw std::invalid_argument("cannot tell the image format of '" + path +
                               "' from its extension '" + ext +
-                              "' (supported: .png .tga .ppm .hdr .pfm)");
+                              "' (supported: .png .tga .ppm .hdr .pfm .exr)");
 }
 
 void write_image(const std::string& path, const Image& image, const ToneMap& tone) {
@@ -116,6 +118,9 @@ void write_image(const std::string& path, const Image& image, const ToneMap& ton
       break;
     case ImageFormat::pfm:
       write_pfm(file, image);
+      break;
+    case ImageFormat::exr:
+      file = encode_exr(image);
       break;
   }
   if (!ok) throw std::runtime_error("stb_image_write failed to encode '" + path + "'");

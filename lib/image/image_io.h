@@ -12,9 +12,9 @@
 namespace rtk {
 
 /// The file formats of write_image and read_image.
-enum class ImageFormat { png, tga, ppm, hdr, pfm };
+enum class ImageFormat { png, tga, ppm, hdr, pfm, exr };
 
-/// The format named by a path's extension (case-insensitive: .png, .tga, .ppm, .hdr, .pfm);
+/// The format named by a path's extension (case-insensitive: .png, .tga, .ppm, .hdr, .pfm, .exr);
 /// throws std::invalid_argument listing the supported extensions otherwise.
 ImageFormat image_format_from_path(const std::string& path);
 
@@ -23,7 +23,8 @@ ImageFormat image_format_from_path(const std::string& path);
 /// per channel, made by `tone` (gamma, then clamping to [0, 1]); HDR (Radiance RGBE, through
 /// stb_image_write) and PFM hold linear floats and ignore `tone`. PFM is written by hand:
 /// the "PF" header, width and height, the scale -1 (negative: little-endian floats), then the
-/// rows from the BOTTOM row up, as the format requires. The file is encoded in memory and
+/// rows from the BOTTOM row up, as the format requires. EXR holds the linear floats too (32-bit
+/// R, G, B, ZIP-compressed, through the OpenEXR library) and ignores `tone`. The file is encoded in memory and
 /// written all or nothing (lib/io's write_file: a temporary file renamed when complete).
 /// Throws std::invalid_argument for an unknown extension or an empty image, FileError (a
 /// std::runtime_error) naming the path and the system's reason when the file cannot be written.

@@ -5,10 +5,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
 #include "image/framebuffer.h"
+#include "image/image_decode.h"
+#include "image/image_error.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
 
@@ -98,6 +101,29 @@ TEST_CASE("lib_image: float formats round-trip exactly (PFM) or to RGBE precisio
   std::remove(hdr.c_str());
 }
 
+TEST_CASE("lib_image: OpenEXR round-trips the floats exactly, and a damaged file is an error") {
+  const Image image = test_image(37.0f);
+  const std::string exr = temp_path("a.exr");
+  write_image(exr, image);
+  const DecodedImage d = read_image_file(exr);
+  CHECK(d.linear);
+  REQUIRE(d.image.width == 5);
+  REQUIRE(d.image.height == 3);
+  CHECK(d.image.pixels == image.pixels);  // 32-bit floats, lossless compression
+  // Cut short anywhere, the file is an error that names it, never an image of zeros.
+  std::string bytes;
+  {
+    std::ifstream in(exr, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  for (size_t keep = 0; keep < bytes.size(); ++keep) {
+    INFO(keep);
+    CHECK_THROWS_WITH_AS(decode_image(std::string_view(bytes).substr(0, keep), "cut.exr"),
+                         doctest::Contains("cut.exr"), std::runtime_error);
+  }
+  std::remove(exr.c_str());
+}
+
 TEST_CASE("lib_image: 8-bit formats round-trip the tone-mapped bytes") {
   const Image image = test_image(0.9f);
   for (const char* ext : {".png", ".tga", ".ppm", ".PNG"}) {
@@ -121,9 +147,10 @@ TEST_CASE("lib_image: 8-bit formats round-trip the tone-mapped bytes") {
 TEST_CASE("lib_image: bad paths and extensions fail with a clear message") {
   const Image image = test_image(1.0f);
   try {
-    write_image(temp_path("c.exr"), image);
+    write_image(temp_path("c.tiff"), image);
     FAIL("no exception");
   } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find(".tiff") != std::string::npos);
     CHECK(std::string(e.what()).find(".exr") != std::string::npos);
     CHECK(std::string(e.what()).find(".png") != std::string::npos);
   }
@@ -148,4 +175,27 @@ TEST_CASE("lib_image: bad paths and extensions fail with a clear message") {
   std::remove(bad_pfm.c_str());
   CHECK(image_format_from_path("dir.v2/out.Tga") == ImageFormat::tga);
   CHECK_THROWS_AS(image_format_from_path("dir.png/out"), std::invalid_argument);
+}
+
+TEST_CASE("lib_image: the relative RMS error against a reference") {
+  const Image reference = test_image(1.0f);
+  CHECK(relative_rms_error(reference, reference) == 0.0);
+  // An image off by a factor (1 + e) everywhere is off by exactly e, whatever the scene.
+  CHECK(relative_rms_error(test_image(1.25f), reference) == doctest::Approx(0.25).epsilon(1e-6));
+  CHECK(relative_rms_error(test_image(0.0f), reference) == doctest::Approx(1.0));
+  // One value changed: sqrt(d^2 / sum r^2), summed by hand.
+  double norm = 0;
+  for (const Color& c : reference.pixels) norm += double(c.r) * c.r + double(c.g) * c.g + double(c.b) * c.b;
+  Image one = reference;
+  one.at(4, 2).g += 0.5f;
+  CHECK(relative_rms_error(one, reference) == doctest::Approx(std::sqrt(0.25 / norm)));
+  // What has no meaning is refused: another size, values that are not finite, a black reference.
+  CHECK_THROWS_WITH_AS(relative_rms_error(Image(4, 3), reference), "the image is 4 x 3, the reference 5 x 3",
+                       std::invalid_argument);
+  Image nan = reference;
+  nan.at(1, 2).b = std::nanf("");
+  CHECK_THROWS_AS(relative_rms_error(nan, reference), std::invalid_argument);
+  CHECK_THROWS_AS(relative_rms_error(reference, nan), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(relative_rms_error(reference, test_image(0.0f)), "the reference is black",
+                       std::invalid_argument);
 }

@@ -34,7 +34,8 @@ const std::map<std::string_view, Range, std::less<>> kScalarRanges = {
 
 std::map<std::string, uint32_t> read_mtl_text(std::string_view text,
                                               const std::filesystem::path& path, RenderScene& scene,
-                                              const WarningHandler& warn) {
+                                              const WarningHandler& warn,
+                                              const TextureConventions& conventions) {
   const std::string file = path.string();
   std::deque<std::string> storage;
   const std::vector<TextLine> lines = scene_io::split_lines(text, file, storage);
@@ -100,7 +101,7 @@ std::map<std::string, uint32_t> read_mtl_text(std::string_view text,
         warn(file + ":" + std::to_string(l.line) + ": map_Kd options are ignored");
       const std::filesystem::path image = path.parent_path() / std::string(l.tokens.back());
       try {
-        params.set("map_Kd", std::shared_ptr<const Texture>(load_image_texture(image.string())));
+        params.set("map_Kd", std::shared_ptr<const Texture>(load_image_texture(image.string(), conventions)));
       } catch (const std::exception& e) {
         fail(where, std::string("map_Kd: ") + e.what());
       }
@@ -114,8 +115,9 @@ std::map<std::string, uint32_t> read_mtl_text(std::string_view text,
 }
 
 std::map<std::string, uint32_t> load_mtl(const std::filesystem::path& path, RenderScene& scene,
-                                         const WarningHandler& warn) {
-  return read_mtl_text(read_file(path, kMaxTextFileBytes), path, scene, warn);
+                                         const WarningHandler& warn,
+                                         const TextureConventions& conventions) {
+  return read_mtl_text(read_file(path, kMaxTextFileBytes), path, scene, warn, conventions);
 }
 
 }  // namespace rtk

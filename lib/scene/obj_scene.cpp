@@ -47,7 +47,8 @@ struct CornerHash {
 
 }  // namespace
 
-void load_obj_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn) {
+void load_obj_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn,
+                    const TextureConventions& conventions) {
   const std::string file = path.string();
   const std::string text = read_file(path);
   std::deque<std::string> storage;
@@ -135,7 +136,7 @@ void load_obj_scene(const std::filesystem::path& path, RenderScene& scene, const
       if (args < 1) fail(where, "mtllib takes file names");
       for (size_t i = 1; i <= args; ++i) {
         try {
-          for (const auto& [name, index] : load_mtl(path.parent_path() / std::string(l.tokens[i]), scene, warn))
+          for (const auto& [name, index] : load_mtl(path.parent_path() / std::string(l.tokens[i]), scene, warn, conventions))
             materials[name] = index;
         } catch (const FileError& e) {
           if (e.line() != 0) throw;

@@ -32,7 +32,8 @@ namespace rtk {
 /// Appends the triangles, vertices, materials and emitting triangles of an OBJ file (and of
 /// the MTL files it names) to `scene`. Throws FileError (file and line) for a malformed line
 /// or a file that cannot be read; warnings go to `warn`.
+/// Texture files (map_Kd) are read by `conventions` (chapter 11).
 void load_obj_scene(const std::filesystem::path& path, RenderScene& scene,
-                    const WarningHandler& warn = {});
+                    const WarningHandler& warn = {}, const TextureConventions& conventions = {});
 
 }  // namespace rtk

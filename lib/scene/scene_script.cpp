@@ -154,13 +154,14 @@ class ScriptReader {
                              ": unknown scene format (expected .obj or .xml)");
     if (!std::filesystem::is_regular_file(path))
       fail(option.where, "-i: cannot open '" + path.string() + "'");
+    keep_scene_for_outputs();
     last_first_vertex_ = s_.scene.mesh.vertices.size();
     last_first_triangle_ = s_.scene.mesh.triangles.size();
     try {
       if (ext == ".xml")
-        load_xml_scene(path, s_.scene, warn_);
+        load_xml_scene(path, s_.scene, warn_, s_.conventions);
       else
-        load_obj_scene(path, s_.scene, warn_);
+        load_obj_scene(path, s_.scene, warn_, s_.conventions);
     } catch (const FileError& e) {
       // An error at a line of the scene file is reported there; one about the whole file
       // (its size, its type) at the -i that named it.
@@ -184,6 +185,7 @@ class ScriptReader {
       if (e.line() != 0) throw;
       fail(option.where, "-motion: " + std::string(e.what()));
     }
+    keep_scene_for_outputs();
     RenderScene& sc = s_.scene;
     const size_t nv = sc.mesh.vertices.size() - last_first_vertex_;
     const size_t nt = sc.mesh.triangles.size() - last_first_triangle_;
@@ -225,8 +227,12 @@ class ScriptReader {
         s_.options.max_depth = static_cast<int>(integer(key, 0, 1 << 16));
       } else if (key.text == "spp") {
         s_.options.spp = static_cast<int>(integer(key, 1, 1 << 20));
+      } else if (key.text == "minContribution") {
+        const float m = number(key);
+        if (!(m >= 0.0f)) fail(key.where, "-renderer: minContribution must be 0 or more");
+        s_.options.min_contribution = m;
       } else {
-        // A parameter we do not model (minContribution, backplate, ...): its value is the
+        // A parameter we do not model (Embree 1.1 has a few more): its value is the
         // tokens up to the next "key =" or the closing brace.
         warn(key.where, "-renderer: parameter '" + scene_io::shown(key.text) +
                             "' is not modelled and is ignored");
@@ -241,6 +247,15 @@ class ScriptReader {
     const Token& o = (*tokens_)[pos_++];
     std::string_view name = o.text;
     if (name.starts_with("--")) name.remove_prefix(1);
+    // Each -o renders the state set up before it (ScriptOutput); what follows the last one
+    // changes no image. An included script is counted by its own options.
+    if (name != "-o" && name != "-c") {
+      ++s_.options_read;
+      if (!s_.outputs.empty() && s_.after_last_output.empty())
+        s_.after_last_output = where_text(o.where) + ": " + o.text;
+    }
+    // Everything that adds to the scene keeps it first for the outputs named before.
+    if (name.ends_with("light") || name == "-trisphere") keep_scene_for_outputs();
     RenderScene& sc = s_.scene;
     CameraParams& cam = sc.camera;
     if (name == "-c") include(o);
@@ -327,6 +342,11 @@ class ScriptReader {
       const Vec3f p = vec3(o);
       const Color i = color(o);
       at(o, [&] { sc.add_light(std::make_shared<PointLight>(p, i)); });
+    } else if (name == "-spotlight") {
+      const Vec3f p = vec3(o), d = vec3(o);
+      const Color i = color(o);
+      const float inner = number(o), outer = number(o);
+      at(o, [&] { sc.add_light(std::make_shared<SpotLight>(p, d, i, inner, outer)); });
     } else if (name == "-directionallight" || name == "-dirlight") {
       const Vec3f d = vec3(o);
       const Color e = color(o);
@@ -350,7 +370,12 @@ class ScriptReader {
     } else if (name == "-hdrilight") {
       const Color l = color(o);
       const std::filesystem::path path = file(o);
-      at(o, [&] { sc.add_light(std::make_shared<EnvironmentLight>(load_environment_image(path.string()), l)); });
+      const TextureConventions& c = s_.conventions;
+      at(o, [&] {
+        sc.add_light(std::make_shared<EnvironmentLight>(
+            load_environment_image(path.string(), c.encoding), l, Frame({1, 0, 0}, {0, 0, 1}, {0, 1, 0}),
+            c.embree11_environment ? EnvironmentMapping::embree11 : EnvironmentMapping::rtk));
+      });
       s_.files.push_back(path);
     } else if (name == "-trisphere") {
       const Vec3f p = vec3(o);
@@ -372,10 +397,69 @@ class ScriptReader {
         fail(t.where, std::string("-o: ") + e.what());
       }
       s_.outputs.push_back(path);
-    } else if (name == "-vignetting" || name == "-backplate" || name == "-refine") {
+      ScriptOutput out;
+      out.path = path;
+      out.state = s_.options_read;
+      out.options = s_.options;
+      out.tone = s_.tone;
+      out.camera = sc.camera;
+      out.accel = s_.accel;
+      out.kernels = s_.kernels;
+      s_.output_states.push_back(std::move(out));
+      s_.after_last_output.clear();
+    } else if (name == "-conventions") {
+      // The images read after it: Embree 1.1's conventions (the guide's scenes were made for
+      // them) or RTK's (chapter 11's TextureConventions says how they differ).
+      const Token& t = take(o, "embree1.1 or rtk");
+      if (t.text == "embree1.1")
+        s_.conventions = TextureConventions::embree11();
+      else if (t.text == "rtk")
+        s_.conventions = TextureConventions{};
+      else
+        fail(t.where, "-conventions: unknown conventions '" + scene_io::shown(t.text) + "' (embree1.1 or rtk)");
+    } else if (name == "-righthanded" || name == "-lefthanded") {
+      // Embree 1.1's camera is left-handed (chapter 10); Embree 2 and 3 added the choice, and
+      // Embree 3's scripts expect right-handed. RTK's own scenes say which they are.
+      cam.right_handed = name == "-righthanded";
+    } else if (name == "-backplate") {
+      // Embree 1.1's backplate: an image camera rays see where they meet nothing, read by
+      // the conventions in effect and stretched over the frame.
+      const std::filesystem::path path = file(o);
+      keep_scene_for_outputs();
+      const TextureConventions& c = s_.conventions;
+      at(o, [&] {
+        sc.backplate = load_image_texture(path.string(), c.encoding, WrapMode::clamp, c.lookup, TextureOrigin::bottom);
+      });
+      s_.files.push_back(path);
+    } else if (name == "-refine") {
+      // The viewer's progressive refinement at start (its r key toggles it).
+      s_.refine = integer(o, 0, 1) != 0;
+    } else if (name == "-fullscreen") {
+      s_.fullscreen = true;  // the viewer's window fills the screen
+    } else if (name == "-time") {
+      // A decimal number of seconds: NaN, infinity, zero and negative times are refused.
+      const Token& t = take(o, "a number of seconds");
+      const double seconds = scene_io::parse_float(t.text, t.where, o.text, 0.0f, 1e6f);
+      if (!(seconds > 0.0))
+        fail(t.where, "-time: " + scene_io::shown(t.text) + " seconds is not above 0");
+      s_.time_limit = seconds;
+    } else if (name == "-reference") {
+      // The converged image must be there and linear; it is read when the render ends, but a
+      // missing or unreadable file is an error now, before any work.
+      const Token& t = take(o, "an image file");
+      const std::filesystem::path path = dir_ / t.text;
+      std::string ext = path.extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (ext != ".pfm" && ext != ".hdr" && ext != ".exr")
+        fail(t.where, "-reference " + scene_io::shown(t.text) +
+                          ": needs a linear image, .pfm, .hdr or .exr (8-bit images are tone-mapped)");
+      if (!std::filesystem::is_regular_file(path))
+        fail(t.where, "-reference: cannot open '" + path.string() + "'");
+      s_.reference = path;
+    } else if (name == "-vignetting") {
       take(o, "a value");
       warn(o.where, o.text + " is not modelled and is ignored");
-    } else if (name == "-display" || name == "-fullscreen") {
+    } else if (name == "-display") {
       warn(o.where, o.text + ": the viewer is opened by running rtk without -o");
     } else {
       fail(o.where, "unknown option '" + scene_io::shown(o.text) + "'");
@@ -411,6 +495,24 @@ class ScriptReader {
       }
   }
 
+  // [ch13-script-outputs]
+  // Before the scene changes, the outputs named so far keep a copy of it as it is (one copy,
+  // shared by all of them); an output named after the last change renders the final scene.
+  void keep_scene_for_outputs() {
+    std::shared_ptr<const RenderScene> copy;
+    for (ScriptOutput& out : s_.output_states)
+      if (!out.scene) {
+        if (!copy) copy = std::make_shared<const RenderScene>(s_.scene);
+        out.scene = copy;
+      }
+  }
+
+  // [ch13-script-outputs]
+
+  static std::string where_text(const Where& w) {
+    return w.line ? w.file + ":" + std::to_string(w.line) : w.file;
+  }
+
   // Records where an option was given (under `key`, or its own name), for the checks that
   // can only be made once everything is read.
   void given(const Token& option, std::string_view key = {}) {
@@ -431,6 +533,60 @@ class ScriptReader {
 };
 
 }  // namespace
+
+// [scene-script-help]
+// One line per option, in the order of a script's life: files, camera, image, renderer,
+// kernels, lights, output, what is read and ignored.
+constexpr ScriptOptionHelp kScriptOptions[] = {
+    {"-c", "FILE.ecs", "read a command script (its files are relative to it)"},
+    {"-i", "FILE.obj|FILE.xml", "load geometry: OBJ with its MTL materials, or an Embree XML scene"},
+    {"-motion", "FILE.obj", "the previous -i at shutter time 1 (motion blur)"},
+    {"-trisphere", "x y z r numTheta numPhi", "a red matte sphere of triangles"},
+    {"-vp", "x y z", "camera position (default 0 0 0)"},
+    {"-vi", "x y z", "point of interest, seen at the image centre (default 1 0 0)"},
+    {"-vd", "x y z", "view direction (instead of -vi)"},
+    {"-vu", "x y z", "up direction (default 0 1 0)"},
+    {"-fov", "degrees", "vertical field of view (default 64); also -angle"},
+    {"-angle", "degrees", "the same as -fov"},
+    {"-radius", "r", "lens radius: 0 a pinhole, more a thin lens (depth of field)"},
+    {"-focaldistance", "d", "distance in focus (default 0: the point of interest's)"},
+    {"-lefthanded", "", "Embree 1.1's camera, right = cross(up, view) (the default)"},
+    {"-righthanded", "", "Embree 3's camera: the same view mirrored left to right"},
+    {"-size", "w h", "image size in pixels (default 512 512)"},
+    {"-spp", "n", "samples per pixel (default 1)"},
+    {"-depth", "n", "most scattering events on a path (default 10)"},
+    {"-gamma", "g", "display gamma of 8-bit outputs (default 1)"},
+    {"-renderer", "NAME [{ key = value ... }]", "pathtracer (pt) { depth spp minContribution } or debug (eye light)"},
+    {"-seed", "n", "random seed: another, equally good image"},
+    {"-sampler", "independent|sobol", "sample generator (default sobol)"},
+    {"-filter", "box|tent|bspline", "pixel filter (default box)"},
+    {"-threads", "n", "worker threads (default 0: every core)"},
+    {"-accel", "SPEC", "acceleration structure: bvh2, bvh4, bvh8[.objectsplit|.spatialsplit], bvh4mb"},
+    {"-tri", "SPEC", "triangle layout and intersector, e.g. triangle4.moeller"},
+    {"-isa", "scalar|sse4|avx2|avx512", "the kernels' instruction set (default: the best the CPU runs)"},
+    {"-kernels", "rtk|embree", "who traces the rays: RTK's kernels or Embree 3's"},
+    {"-ambientlight", "r g b", "uniform light from every direction"},
+    {"-pointlight", "x y z r g b", "point light: position and intensity"},
+    {"-spotlight", "x y z dx dy dz r g b angleMin angleMax", "spot light: full intensity within angleMin degrees of its axis, none beyond angleMax"},
+    {"-directionallight", "dx dy dz r g b", "light along a direction: direction and irradiance"},
+    {"-dirlight", "dx dy dz r g b", "the same as -directionallight"},
+    {"-distantlight", "dx dy dz r g b halfAngle", "a distant disk (the sun): direction, radiance, half angle"},
+    {"-trianglelight", "px py pz ux uy uz vx vy vz r g b", "emitting triangle P, P+U, P+V of radiance L"},
+    {"-quadlight", "px py pz ux uy uz vx vy vz r g b", "emitting parallelogram P, U, V of radiance L"},
+    {"-hdrilight", "r g b FILE", "environment map scaled by L (.hdr .exr .pfm .ppm .png ...)"},
+    {"-conventions", "embree1.1|rtk", "how later images are read (default embree1.1: t = 0 top, nearest, 8-bit linear, 1.1's sky)"},
+    {"-o", "FILE", "render the state set up so far to .png .tga .ppm .hdr .pfm .exr"},
+    {"-time", "SECONDS", "rtk render: render progressively until the time is spent (instead of -spp)"},
+    {"-reference", "IMAGE", "rtk render: print the relative RMS error against this converged .pfm .hdr .exr"},
+    {"-vignetting", "v", "read and ignored (not modelled)"},
+    {"-backplate", "FILE", "an image behind the scene, seen by camera rays that hit nothing"},
+    {"-refine", "0|1", "the viewer refines progressively at start (1, the default) or not (0); its r key toggles it"},
+    {"-display", "", "ignored: rtk without -o opens the viewer"},
+    {"-fullscreen", "", "the viewer's window fills the screen"},
+};
+// [scene-script-help]
+
+std::span<const ScriptOptionHelp> script_option_help() { return kScriptOptions; }
 
 void read_script_file(const std::filesystem::path& path, SceneScript& script,
                       const WarningHandler& warn) {

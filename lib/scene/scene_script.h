@@ -12,9 +12,12 @@
 /// -kernels rtk|embree, -threads n,
 /// -seed n, -ambientlight r g b, -pointlight p I, -directionallight/-dirlight d E,
 /// -distantlight d L halfAngle, -trianglelight P U V L, -quadlight P U V L, -hdrilight r g b
-/// FILE, -trisphere p r numTheta numPhi, -o FILE. -vignetting, -backplate, -display,
-/// -fullscreen and -refine are read and ignored with a warning. `#` starts a comment; files
-/// are named relative to the script that names them.
+/// FILE, -trisphere p r numTheta numPhi, -righthanded, -lefthanded, -o FILE (rendered with the
+/// state set up before it; ScriptOutput), -conventions, -backplate, and the viewer's -fullscreen
+/// and -refine; -vignetting is read and ignored with a warning. RTK's own -time SECONDS and
+/// -reference IMAGE are for `rtk render` (equal-time rendering and its error).
+/// script_option_help() lists them all. `#` starts a comment; files are named relative to the
+/// script that names them.
 ///
 /// Every value is checked where it is read, so that its error names the file and line (or
 /// the command line's argument): numbers are finite and in their option's range (-fov
@@ -28,6 +31,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <map>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -43,6 +47,24 @@
 
 namespace rtk {
 
+/// What an `-o` renders: the state the scripts and the command line had set up when they
+/// named it, as in Embree 1.1, where each -o renders at its position (two -o with different
+/// -size between them give two different images).
+struct ScriptOutput {
+  std::filesystem::path path;  ///< the image file
+  /// Counts the options read before this -o: two outputs with the same count (nothing between
+  /// them) are the same image, rendered once.
+  uint64_t state = 0;
+  RenderOptions options;
+  ToneMap tone;
+  CameraParams camera;
+  AccelConfig accel;
+  std::string kernels;
+  /// The scene as it was at this -o, kept only once a later option changed it (geometry or a
+  /// light added); null: the scene is SceneScript::scene.
+  std::shared_ptr<const RenderScene> scene;
+};
+
 /// Everything the scripts and the command line said, in the order they said it.
 struct SceneScript {
   RenderScene scene;                         ///< geometry, materials, lights, camera
@@ -50,12 +72,36 @@ struct SceneScript {
   ToneMap tone;                              ///< -gamma
   AccelConfig accel;                         ///< -accel, -tri, -isa (threads: options.threads)
   std::string kernels = "rtk";               ///< -kernels rtk|embree: who traces the rays
+  bool fullscreen = false;                   ///< -fullscreen: the viewer fills the screen
+  bool refine = true;                        ///< -refine 0|1: the viewer refines progressively
+  /// -conventions embree1.1|rtk: how the images read after it map onto surfaces and the sky.
+  /// Scripts are the guide's unless they say otherwise, so Embree 1.1's are the default.
+  TextureConventions conventions = TextureConventions::embree11();
   std::vector<std::filesystem::path> outputs;  ///< every -o, in order
+  std::vector<ScriptOutput> output_states;     ///< for each of `outputs`, what it renders
+  uint64_t options_read = 0;                   ///< how many options were read (ScriptOutput::state)
+  /// The first option read after the last -o (empty when none was, or no -o was given): it
+  /// changes no image, which `rtk render` says.
+  std::string after_last_output;
+  /// -time SECONDS: render progressively until this much time is spent (0: -spp samples).
+  double time_limit = 0;
+  /// -reference IMAGE: a converged image (.pfm or .hdr, linear) to report the error against.
+  std::filesystem::path reference;
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
   /// Where each option checked only after reading was last given, by name ("-vp", "-vi" (also
   /// for -vd), "-vu", "-fov", "-radius", "-focaldistance", "-accel", "-tri", "-isa", "-kernels").
   std::map<std::string, scene_io::Where, std::less<>> given_at;
 };
+
+/// One option of the scripts (and of `rtk render`'s command line), as -help lists it.
+struct ScriptOptionHelp {
+  std::string_view name;       ///< "-vp"
+  std::string_view arguments;  ///< "x y z"
+  std::string_view meaning;    ///< one line
+};
+/// Every option read_script_file and read_script_args accept, in the order -help lists them
+/// (a test checks that every option the reader knows is here).
+std::span<const ScriptOptionHelp> script_option_help();
 
 /// Runs `make` (a device commit of the script's camera or scene) and turns its
 /// std::invalid_argument into a FileError at the place where an option of `options` was

@@ -57,8 +57,9 @@ struct SceneBudget {
 class XmlReader {
  public:
   XmlReader(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn,
-            int include_depth, SceneBudget& budget)
-      : path_(path),
+            int include_depth, SceneBudget& budget, const TextureConventions& conventions)
+      : conventions_(conventions),
+        path_(path),
         file_(path.string()),
         scene_(scene),
         warn_(warn),
@@ -440,7 +441,7 @@ class XmlReader {
       } else if (kind == "texture") {
         const std::filesystem::path file = path_.parent_path() / quoted(p);
         try {
-          params.set(pname, std::shared_ptr<const Texture>(load_image_texture(file.string())));
+          params.set(pname, std::shared_ptr<const Texture>(load_image_texture(file.string(), conventions_)));
         } catch (const std::exception& e) {
           fail(p, "<texture name=\"" + pname + "\">: " + e.what());
         }
@@ -593,9 +594,13 @@ class XmlReader {
       return Color(v.x, v.y, v.z);
     };
     try {
-      if (name == "PointLight" || name == "SpotLight") {
-        if (name == "SpotLight") warn(n, "<SpotLight> is approximated by a point light (RTK has no spot light)");
+      if (name == "PointLight") {
         scene_.add_light(std::make_shared<PointLight>(space.p, color("I")));
+      } else if (name == "SpotLight") {
+        // Chapter 12's spot: at the frame's origin, pointing along its z axis.
+        scene_.add_light(std::make_shared<SpotLight>(space.p, space.vector({0, 0, 1}), color("I"),
+                                                     number(require(n, "angleMin")),
+                                                     number(require(n, "angleMax"))));
       } else if (name == "DirectionalLight") {
         scene_.add_light(std::make_shared<DirectionalLight>(space.vector({0, 0, 1}), color("E")));
       } else if (name == "DistantLight") {
@@ -627,8 +632,9 @@ class XmlReader {
         const Color scale = color("L");
         scene_.add_light(std::make_shared<EnvironmentLight>(
             referenced(n, "<HDRILight> image",
-                       [&] { return load_environment_image(file.string()); }),
-            scale, frame));
+                       [&] { return load_environment_image(file.string(), conventions_.encoding); }),
+            scale, frame,
+            conventions_.embree11_environment ? EnvironmentMapping::embree11 : EnvironmentMapping::rtk));
       }
     } catch (const FileError&) {
       throw;
@@ -653,9 +659,9 @@ class XmlReader {
       if (include_depth_ + 1 >= kMaxXmlIncludeDepth)
         fail(n, what + ": files nested more than " + std::to_string(kMaxXmlIncludeDepth) +
                     " deep (does it include itself?)");
-      referenced(n, what, [&] { XmlReader(p, scene_, warn_, include_depth_ + 1, budget_).run(); });
+      referenced(n, what, [&] { XmlReader(p, scene_, warn_, include_depth_ + 1, budget_, conventions_).run(); });
     } else if (ext == ".obj") {
-      referenced(n, what, [&] { load_obj_scene(p, scene_, warn_); });
+      referenced(n, what, [&] { load_obj_scene(p, scene_, warn_, conventions_); });
     } else {
       fail(n, what + ": unknown file type (.xml, .obj)");
     }
@@ -670,6 +676,7 @@ class XmlReader {
     }
   }
   
+  TextureConventions conventions_;
   std::filesystem::path path_;
   std::string file_;
   RenderScene& scene_;
@@ -695,14 +702,16 @@ class XmlReader {
 
 }  // namespace
 
-void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn) {
-  read_xml_scene_text(read_file(path), path, scene, warn);
+void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn,
+                    const TextureConventions& conventions) {
+  read_xml_scene_text(read_file(path), path, scene, warn, conventions);
 }
 
 void read_xml_scene_text(std::string_view text, const std::filesystem::path& path,
-                         RenderScene& scene, const WarningHandler& warn) {
+                         RenderScene& scene, const WarningHandler& warn,
+                         const TextureConventions& conventions) {
   SceneBudget budget;
-  XmlReader(path, scene, warn, 0, budget).run(std::string(text));
+  XmlReader(path, scene, warn, 0, budget, conventions).run(std::string(text));
   // An OBJ file included after a moving mesh added vertices without a time-1 position: they
   // stand still.
   if (scene.has_motion() && scene.vertices_t1.size() < scene.mesh.vertices.size())

@@ -35,11 +35,14 @@ namespace rtk {
 /// "FILE:LINE: message" for malformed XML, a malformed or missing value, an index out of
 /// range, a binary array outside its side file, or a file that cannot be read; warnings go to
 /// `warn`.
-void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn = {});
+/// Textures and HDRILight images are read by `conventions` (chapters 11 and 12).
+void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn = {},
+                    const TextureConventions& conventions = {});
 
 /// load_xml_scene on the text of the file named `path` (the files it names are relative to
 /// its folder), for the fuzzer.
 void read_xml_scene_text(std::string_view text, const std::filesystem::path& path,
-                         RenderScene& scene, const WarningHandler& warn = {});
+                         RenderScene& scene, const WarningHandler& warn = {},
+                         const TextureConventions& conventions = {});
 
 }  // namespace rtk

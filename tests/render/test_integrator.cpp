@@ -112,6 +112,72 @@ TEST_CASE("ch13: images are identical for 1 and 2 threads and for split passes")
   CHECK_FALSE(other.resolve().pixels == a.pixels);
 }
 
+TEST_CASE("ch13: minContribution ends faint paths: none at 0, the bounced light above every throughput") {
+  SceneScript script = test::cornell_box();
+  RenderOptions options = script.options;
+  options.width = 16;
+  options.height = 16;
+  options.spp = 4;
+  options.threads = 1;
+  const AccelKernels kernels(script.scene, {});
+  auto render = [&](float min_contribution, int depth) {
+    RenderOptions o = options;
+    o.min_contribution = min_contribution;
+    o.max_depth = depth;
+    Framebuffer f(o.width, o.height);
+    Renderer(script.scene, kernels, o).render(f);
+    return f.resolve();
+  };
+  auto mean = [](const Image& image) {
+    double sum = 0;
+    for (const Color& c : image.pixels) sum += luminance(c);
+    return sum / double(image.pixels.size());
+  };
+  const Image full = render(0.0f, 8);
+  // A cutoff no throughput of this box falls under before Russian roulette changes nothing.
+  CHECK(render(1e-6f, 8).pixels == full.pixels);
+  // A cutoff above every throughput ends each path at its first bounce: what is left is the
+  // direct light, less than the full image, and more than the emitters alone (depth 0).
+  const double cut = mean(render(2.0f, 8));
+  CHECK(cut < 0.9 * mean(full));
+  CHECK(cut > mean(render(0.0f, 0)));
+}
+
+TEST_CASE("ch13: camera rays that meet nothing see the backplate; reflections see the lights") {
+  // A white sphere in the middle of a 6 x 4 frame, a backplate of six by four distinct texels
+  // looked up nearest, under a uniform sky.
+  RenderScene scene;
+  test::add_sphere(scene, {0, 0, 0}, 1.5f, 24, 48, test::white_material(scene));
+  scene.add_light(std::make_shared<AmbientLight>(Color(1.0f)));
+  scene.camera.position = {0, 0, -5};
+  scene.camera.look_at = {0, 0, 0};
+  scene.camera.fov_degrees = 40;
+  std::vector<Color> texels;
+  for (int i = 0; i < 24; ++i) texels.push_back(Color(0.1f * (i % 6), 0.2f * (i / 6), 0.5f));
+  scene.backplate = std::make_shared<ImageTexture>(6, 4, texels, WrapMode::clamp,
+                                                   TextureLookup::nearest, TextureOrigin::bottom);
+  RenderOptions options;
+  options.width = 6;
+  options.height = 4;
+  options.spp = 8;
+  options.threads = 1;
+  const Image image = test::render_image(scene, options);
+  // The corners miss the sphere: each pixel is its own texel (the box filter keeps every
+  // sample inside its pixel), up to the rounding of the mean of its samples.
+  for (int y : {0, 3})
+    for (int x : {0, 5}) {
+      INFO(x, ", ", y);
+      const Color got = image.pixels[size_t(y) * 6 + x], want = texels[size_t(y) * 6 + x];
+      CHECK(got.r == doctest::Approx(want.r).epsilon(1e-5));
+      CHECK(got.g == doctest::Approx(want.g).epsilon(1e-5));
+      CHECK(got.b == doctest::Approx(want.b).epsilon(1e-5));
+    }
+  // The white sphere under a white sky is white (the furnace), not the backplate's colours.
+  const Color centre = image.pixels[1 * 6 + 2];
+  CHECK(centre.b > 0.9f);
+  CHECK(centre.r > 0.9f);
+}
+
 TEST_CASE("ch13: the Cornell box converges like 1/sqrt(spp)") {
   // RMS error against a 128-spp reference (another seed, so that its samples are not the
   // test images' own) at 1, 4 and 16 spp. Independent samples: error ~ spp^-1/2. The

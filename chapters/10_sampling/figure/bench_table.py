@@ -8,6 +8,8 @@ import sys
 ROWS = [  # benchmark name, what it is
     ("BM_pixel_sample/0", "CPU time per pixel sample of eight 2D points, independent"),
     ("BM_pixel_sample/1", "the same, Sobol (Owen-scrambled, padded)"),
+    ("BM_sobol_point/0", "one Sobol 2D point, as defined (sobol_owen_reference)"),
+    ("BM_sobol_point/1", "one Sobol 2D point, as the sampler computes it (sobol_owen)"),
     ("BM_camera_ray/0", "pinhole camera ray"),
     ("BM_camera_ray/10", "thin-lens camera ray"),
 ]
@@ -24,7 +26,10 @@ def main():
         extra = ""
         if name == "BM_pixel_sample/1":
             base = runs["BM_pixel_sample/0"]["cpu_time"]
-            extra = f" ({b['cpu_time'] / base:.0f}x)"
+            extra = f" ({b['cpu_time'] / base:.1f}x)"
+        if name == "BM_sobol_point/1":
+            base = runs["BM_sobol_point/0"]["cpu_time"]
+            extra = f" ({base / b['cpu_time']:.1f}x faster)"
         print(f"| {label} | {ns:.3g} ns{extra} |")
 
 
