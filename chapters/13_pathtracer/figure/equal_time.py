@@ -72,10 +72,11 @@ class Rtk:
     def render(self, script, w, h, threads, out, spp=None, seconds=None, sampler="sobol", seed=1,
                reference=None):
         cmd = [self.binary, "render", "-c", script, "-size", w, h, "-depth", DEPTH, "-threads", threads,
-               "-sampler", sampler, "-seed", seed, "-o", out]
+               "-sampler", sampler, "-seed", seed]
         cmd += ["-spp", spp] if seconds is None else ["-time", seconds]
         if reference:
             cmd += ["-reference", reference]
+        cmd += ["-o", out]  # last: an -o renders the state set up before it
         text = run(cmd)
         m = re.search(r"render: \d+x\d+, (\d+) spp.*?: ([0-9.]+) s, ([0-9.e+]+) samples/s.*?(\d+)% of thread time", text)
         if not m:
