@@ -94,7 +94,8 @@ def render(path):
     for b in runs:
         name = b["name"]
         scene = next((v for k, v in scenes.items() if k in name), name.split("/")[0])
-        kernels = "Embree 3" if "kernels:1" in name else f"RTK ({b.get('label', '')})"
+        label = b.get("label", "").removeprefix("rtk ")
+        kernels = "Embree 3" if "kernels:1" in name else f"RTK ({label})"
         print(f"| {scene} | {kernels} | {b['items_per_second'] / 1e3:,.0f} k | {b['Mrays/s']:.2f} | "
               f"{b['kernel_share'] * 100:.0f} % | {b['kernel_Mrays/s']:.2f} |")
 
