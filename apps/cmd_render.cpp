@@ -66,20 +66,20 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   const std::vector<std::string_view> script_args = take_viewer_options(args, viewer);
   read_script_args(script_args, script, [](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); });
   // No -o: the guide's interactive mode, the viewer (chapter 15), for `rtk -c` and `rtk view`.
-  if (script.outputs.empty() && viewer_without_output) {
+  if (script.output_states.empty() && viewer_without_output) {
     if (script.time_limit > 0 || !script.reference.empty())
       throw UsageError("-time and -reference are for rendering to a file (-o), not the viewer");
     return run_viewer(script, viewer);
   }
-  if (script.outputs.empty())
+  if (script.output_states.empty())
     throw UsageError("no -o FILE given: rtk render writes images (.png .tga .ppm .hdr .pfm .exr); "
                      "`rtk -c SCENE.ecs` or `rtk view` without -o opens the interactive viewer");
   if (viewer.frames > 0) throw UsageError("-frames and -screenshot belong to the viewer (no -o)");
   // Every -o was checked where it was read (its folder exists and may be written); its format
   // is checked here, before any work.
-  for (const auto& out : script.outputs) {
+  for (const ScriptOutput& out : script.output_states) {
     try {
-      image_format_from_path(out.string());
+      image_format_from_path(out.path.string());
     } catch (const std::exception& e) {
       throw UsageError(std::string("-o: ") + e.what());
     }

@@ -3,19 +3,19 @@
 // peak memory) and what they buy (Mrays/s through chapter 3's BVH4, occlusion visits with
 // occluder ordering).
 //
-//   build-h3/chapters/04_sah/ch04_bench                       # the default, modest run
-//   RTK_BENCH_LARGE=1 build-h3/chapters/04_sah/ch04_bench --benchmark_filter='tris:(4|16)'
+//   build/chapters/04_sah/ch04_bench                       # the default, modest run
+//   RTK_BENCH_LARGE=1 build/chapters/04_sah/ch04_bench --benchmark_filter='tris:(4|16)'
 //                                                             # adds 4M and 16M triangles
-//   RTK_SCENES=/work/shared/scenes build-h3/chapters/04_sah/ch04_bench   # adds real meshes
-//   RTK_BENCH_GROWTH=1 build-h3/chapters/04_sah/ch04_bench --benchmark_filter='^growth/'
+//   RTK_SCENES=../shared/scenes build/chapters/04_sah/ch04_bench   # adds real meshes
+//   RTK_BENCH_GROWTH=1 build/chapters/04_sah/ch04_bench --benchmark_filter='^growth/'
 //                                                             # BVH8 at 1M, 4M, 16M triangles
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <ctime>
 #include <limits>

@@ -46,25 +46,20 @@ typedef float Lanes4 __attribute__((vector_size(16)));
 RTK_INLINE Lanes4 min4(Lanes4 a, Lanes4 b) { return a < b ? a : b; }
 RTK_INLINE Lanes4 max4(Lanes4 a, Lanes4 b) { return a > b ? a : b; }
 
-
 /// Four 32-bit integers, the bin indices of one centroid on the three axes.
 typedef int32_t Ints4 __attribute__((vector_size(16)));
 
 /// A primitive's box corners as lanes, with zero in lane 3 (the ID's bits there could be a
 /// denormal float, which arithmetic handles slowly). Each is one aligned 16-byte load and a
 /// mask.
-RTK_INLINE Lanes4 lanes_lower(const PrimRef& r) {
+RTK_INLINE Lanes4 lanes_xyz(const void* four_words) {
   Ints4 bits;
-  std::memcpy(&bits, &r.lower, sizeof bits);  // lower.x, .y, .z and the ID
+  std::memcpy(&bits, four_words, sizeof bits);
   const Ints4 xyz{-1, -1, -1, 0};
   return reinterpret_cast<Lanes4>(bits & xyz);
 }
-RTK_INLINE Lanes4 lanes_upper(const PrimRef& r) {
-  Ints4 bits;
-  std::memcpy(&bits, &r.upper, sizeof bits);  // upper.x, .y, .z and the unused word
-  const Ints4 xyz{-1, -1, -1, 0};
-  return reinterpret_cast<Lanes4>(bits & xyz);
-}
+RTK_INLINE Lanes4 lanes_lower(const PrimRef& r) { return lanes_xyz(&r.lower); }  // and the ID
+RTK_INLINE Lanes4 lanes_upper(const PrimRef& r) { return lanes_xyz(&r.upper); }  // and a spare word
 
 /// A primitive as the binning passes read it: its box corners and centroid as lanes.
 struct PrimLanes {

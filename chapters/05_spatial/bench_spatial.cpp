@@ -3,8 +3,8 @@
 // chapter 3's BVH4 on the best ISA), for object splits, the guide's centre splits and SBVH's
 // binned splits; and how the duplication budget trades memory for speed.
 //
-//   build-h5/chapters/05_spatial/ch05_bench --benchmark_counters_tabular=true
-//   RTK_SCENES=/work/shared/scenes build-h5/chapters/05_spatial/ch05_bench   # adds sponza, bunny
+//   build/chapters/05_spatial/ch05_bench --benchmark_counters_tabular=true
+//   RTK_SCENES=../shared/scenes build/chapters/05_spatial/ch05_bench   # adds sponza, bunny
 #include <benchmark/benchmark.h>
 
 #include <time.h>

@@ -10,6 +10,7 @@
 #include "12_lights/distant_light.h"
 #include "12_lights/environment_light.h"
 #include "12_lights/point_light.h"
+#include "image/image_io.h"
 #include "io/read_file.h"
 #include "scene/obj_scene.h"
 #include "scene/parse_number.h"
@@ -251,7 +252,7 @@ class ScriptReader {
     // changes no image. An included script is counted by its own options.
     if (name != "-o" && name != "-c") {
       ++s_.options_read;
-      if (!s_.outputs.empty() && s_.after_last_output.empty())
+      if (!s_.output_states.empty() && s_.after_last_output.empty())
         s_.after_last_output = where_text(o.where) + ": " + o.text;
     }
     // Everything that adds to the scene keeps it first for the outputs named before.
@@ -396,7 +397,6 @@ class ScriptReader {
       } catch (const FileError& e) {
         fail(t.where, std::string("-o: ") + e.what());
       }
-      s_.outputs.push_back(path);
       ScriptOutput out;
       out.path = path;
       out.state = s_.options_read;
@@ -448,9 +448,14 @@ class ScriptReader {
       // missing or unreadable file is an error now, before any work.
       const Token& t = take(o, "an image file");
       const std::filesystem::path path = dir_ / t.text;
-      std::string ext = path.extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-      if (ext != ".pfm" && ext != ".hdr" && ext != ".exr")
+      // The formats that keep linear floats, named as write_image names them.
+      bool linear = false;
+      try {
+        const ImageFormat format = image_format_from_path(path.string());
+        linear = format == ImageFormat::pfm || format == ImageFormat::hdr || format == ImageFormat::exr;
+      } catch (const std::invalid_argument&) {
+      }
+      if (!linear)
         fail(t.where, "-reference " + scene_io::shown(t.text) +
                           ": needs a linear image, .pfm, .hdr or .exr (8-bit images are tone-mapped)");
       if (!std::filesystem::is_regular_file(path))

@@ -77,15 +77,14 @@ struct SceneScript {
   /// -conventions embree1.1|rtk: how the images read after it map onto surfaces and the sky.
   /// Scripts are the guide's unless they say otherwise, so Embree 1.1's are the default.
   TextureConventions conventions = TextureConventions::embree11();
-  std::vector<std::filesystem::path> outputs;  ///< every -o, in order
-  std::vector<ScriptOutput> output_states;     ///< for each of `outputs`, what it renders
+  std::vector<ScriptOutput> output_states;     ///< every -o, in order, and what it renders
   uint64_t options_read = 0;                   ///< how many options were read (ScriptOutput::state)
   /// The first option read after the last -o (empty when none was, or no -o was given): it
   /// changes no image, which `rtk render` says.
   std::string after_last_output;
   /// -time SECONDS: render progressively until this much time is spent (0: -spp samples).
   double time_limit = 0;
-  /// -reference IMAGE: a converged image (.pfm or .hdr, linear) to report the error against.
+  /// -reference IMAGE: a converged image (.pfm, .hdr or .exr, linear) to report the error against.
   std::filesystem::path reference;
   std::vector<std::filesystem::path> files;    ///< every file read (scripts and geometry)
   /// Where each option checked only after reading was last given, by name ("-vp", "-vi" (also

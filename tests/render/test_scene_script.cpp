@@ -96,8 +96,8 @@ TEST_CASE("ch13: a valid script loads geometry, materials, lights, camera and op
   CHECK(s.options.seed == 9);
   CHECK(s.tone.gamma == doctest::Approx(2.2));
   CHECK(s.accel.accel == "bvh4");
-  REQUIRE(s.outputs.size() == 1);
-  CHECK(s.outputs[0] == dir.path / "out.png");
+  REQUIRE(s.output_states.size() == 1);
+  CHECK(s.output_states[0].path == dir.path / "out.png");
   sc.validate();
   // Embree 1.1's minContribution is read, not warned about.
   bool warned_minc = false;

@@ -3,16 +3,16 @@ cost of the finished tree), both relative to 32 bins, from the bins/ benchmarks 
 (JSON; medians when the run repeated).
 
     python3 bins_chart.py ch04_bins.json OUT.tsv"""
-import json
+import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "scripts"))
+import gbench_json  # noqa: E402
+
 
 def main():
-    with open(sys.argv[1]) as f:
-        runs = json.load(f)["benchmarks"]
-    if any(b.get("run_type") == "aggregate" for b in runs):
-        runs = [dict(b, name=b["run_name"]) for b in runs if b.get("aggregate_name") == "median"]
+    runs = gbench_json.runs(sys.argv[1])
     rows = {}
     for b in runs:
         m = re.match(r"bins/[^/]+/[^/]+/bins:(\d+)/", b["name"])

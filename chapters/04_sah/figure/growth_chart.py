@@ -6,17 +6,17 @@ time. The last column is what one thread's time per triangle would be if it grew
 log2 n from the smallest scene on.
 
     python3 growth_chart.py ch04_growth.json OUT.tsv"""
-import json
 import math
+import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "scripts"))
+import gbench_json  # noqa: E402
+
 
 def main():
-    with open(sys.argv[1]) as f:
-        runs = json.load(f)["benchmarks"]
-    if any(b.get("run_type") == "aggregate" for b in runs):
-        runs = [dict(b, name=b["run_name"]) for b in runs if b.get("aggregate_name") == "median"]
+    runs = gbench_json.runs(sys.argv[1])
     rows = {}
     for b in runs:
         m = re.match(r"growth/[^/]+/[^/]+/tris:(\d+)/threads:(\d+)", b["name"])

@@ -4,17 +4,17 @@ run repeated). Each row also carries where its label goes, nudged so that labels
 points do not overlap.
 
     python3 bytes_speed.py ch06_speed.json OUT.tsv"""
-import json
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "scripts"))
+import gbench_json  # noqa: E402
 
 ISAS = ["avx512", "avx2", "sse4", "scalar"]
 
 
 def main():
-    with open(sys.argv[1]) as f:
-        runs = json.load(f)["benchmarks"]
-    if any(b.get("run_type") == "aggregate" for b in runs):
-        runs = [dict(b, name=b["run_name"]) for b in runs if b.get("aggregate_name") == "median"]
+    runs = gbench_json.runs(sys.argv[1])
     points = {}
     for b in runs:
         parts = b["name"].split("/")  # layouts/<scene>/<kind>/bvh<N>/<layout.isect>/<isa>

@@ -2,18 +2,18 @@
 every layout with Möller-Trumbore, primary and diffuse rays, per ISA.
 
     python3 speed_table.py ch06_speed.json   # Markdown table on standard output"""
-import json
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "scripts"))
+import gbench_json  # noqa: E402
 
 LAYOUTS = ["triangle1", "triangle4", "triangle8", "triangle1i", "triangle4i", "triangle1v", "triangle4v"]
 ISAS = [("scalar", "scalar"), ("sse4", "SSE4"), ("avx2", "AVX2"), ("avx512", "AVX-512")]
 
 
 def main():
-    with open(sys.argv[1]) as f:
-        runs = json.load(f)["benchmarks"]
-    if any(b.get("run_type") == "aggregate" for b in runs):
-        runs = [dict(b, name=b["run_name"]) for b in runs if b.get("aggregate_name") == "median"]
+    runs = gbench_json.runs(sys.argv[1])
     rate = {}
     for b in runs:
         parts = b["name"].split("/")  # layouts/<scene>/<kind>/bvh4/<layout.isect>/<isa>
