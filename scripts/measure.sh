@@ -205,7 +205,7 @@ section_ch05_budget() { # spatial splits: the duplication budget against referen
 section_ch06() { # layouts: bytes per triangle of every layout; then ch06_speed
   build ch06_bench
   gbench ch06_bytes "$B/chapters/06_layouts/ch06_bench" \
-    --benchmark_filter='layouts/(sphere_130k|terrain_130k|soup_100k)/primary/bvh(4|8)/triangle[0-9a-z]*[.]moeller/avx512'
+    --benchmark_filter='layouts/(sphere_130k|terrain_130k|soup_100k)/primary/bvh(2|4|8)/triangle[0-9a-z]*[.]moeller/avx512'
   table ch06 chapters/06_layouts/ch06_bytes.md \
     python3 chapters/06_layouts/figure/bytes_table.py "$OUT/ch06_bytes.json"
   run_section ch06_speed

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "01_base/platform.h"
 #include "01_base/simd.h"
@@ -154,5 +155,32 @@ RTK_INLINE bool trace_bvh2(const BVH2& bvh, const Ray& ray, Hit& hit) {
     default: return traverse_bvh2<Leaf, kOcclusion, true, true, true>(bvh, ray, rdir, hit);
   }
 }
+
+// [ch02-batch-kernels]
+/// The batch kernels of a BVH2 whose leaves Leaf reads, in the form every structure hands out
+/// (trace_kernels.h): `structure` is the BVH2. Chapter 2 makes its kernels with
+/// Triangle1Moeller; chapters 6 and 7 give the same loop every layout and test.
+template <class Leaf>
+void intersect_bvh2_batch(const void* structure, std::span<const Ray> rays, std::span<Hit> hits) {
+  require_same_size(rays.size(), hits.size());
+  const BVH2& bvh = *static_cast<const BVH2*>(structure);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    Hit hit;
+    trace_bvh2<Leaf, false>(bvh, rays[i], hit);
+    hits[i] = hit;
+  }
+}
+template <class Leaf>
+void occluded_bvh2_batch(const void* structure, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+  require_same_size(rays.size(), occluded.size());
+  const BVH2& bvh = *static_cast<const BVH2*>(structure);
+  Hit unused;
+  for (size_t i = 0; i < rays.size(); ++i) occluded[i] = trace_bvh2<Leaf, true>(bvh, rays[i], unused) ? 1 : 0;
+}
+template <class Leaf>
+constexpr TraceKernels bvh2_batch_kernels() {
+  return {&intersect_bvh2_batch<Leaf>, &occluded_bvh2_batch<Leaf>};
+}
+// [ch02-batch-kernels]
 
 }  // namespace rtk::RTK_ISA

@@ -1,5 +1,5 @@
 // Chapter 6's benchmark: Mrays/s and bytes per triangle for every layout (Möller-Trumbore),
-// through BVH4 and BVH8, for every ISA, on primary and diffuse rays.
+// through BVH2, BVH4 and BVH8, for every ISA, on primary and diffuse rays.
 //   ch06_bench --benchmark_filter='sphere_130k/diffuse/bvh4/.*/avx512'
 // Set RTK_SCENES=<shared/scenes> to add real meshes. Names read
 // layouts/<scene>/<rays>/bvh<N>/<layout>.moeller/<isa> (chapter 7 measures the other tests).
@@ -63,14 +63,15 @@ void bm_trace(benchmark::State& state, bench::SceneSource scene, TriangleLayout 
 const bool registered = [] {
   for (const bench::SceneSource& scene : bench::bench_scenes())
     for (const bool diffuse : {false, true})
-      for (const int width : {4, 8})
+      for (const int width : {2, 4, 8})
         for (const TriangleLayout layout : kAllLayouts)
           for (const Isa isa : supported_isas()) {
             const std::string name = "layouts/" + scene.name + (diffuse ? "/diffuse" : "/primary") + "/bvh" +
                                      std::to_string(width) + "/" + std::string(layout_name(layout)) + ".moeller/" +
                                      std::string(isa_name(isa));
-            auto* b = width == 4 ? benchmark::RegisterBenchmark(name.c_str(), bm_trace<4>, scene, layout, isa, diffuse)
-                                 : benchmark::RegisterBenchmark(name.c_str(), bm_trace<8>, scene, layout, isa, diffuse);
+            auto* b = width == 2   ? benchmark::RegisterBenchmark(name.c_str(), bm_trace<2>, scene, layout, isa, diffuse)
+                      : width == 4 ? benchmark::RegisterBenchmark(name.c_str(), bm_trace<4>, scene, layout, isa, diffuse)
+                                   : benchmark::RegisterBenchmark(name.c_str(), bm_trace<8>, scene, layout, isa, diffuse);
             b->Unit(benchmark::kMillisecond)->MinTime(0.3);
           }
   return true;

@@ -23,6 +23,7 @@ LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleLayout layout, i
   return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, layout);
 }
 
+template LayoutBVH<2> build_layout_bvh<2>(const TriangleMesh&, TriangleLayout, int);
 template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleLayout, int);
 template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleLayout, int);
 

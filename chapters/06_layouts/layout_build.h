@@ -22,6 +22,7 @@ SahBuildOptions sah_options_for(TriangleLayout layout);
 template <int N>
 LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleLayout layout, int threads = 0);
 
+extern template LayoutBVH<2> build_layout_bvh<2>(const TriangleMesh&, TriangleLayout, int);
 extern template LayoutBVH<4> build_layout_bvh<4>(const TriangleMesh&, TriangleLayout, int);
 extern template LayoutBVH<8> build_layout_bvh<8>(const TriangleMesh&, TriangleLayout, int);
 

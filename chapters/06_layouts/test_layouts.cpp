@@ -1,5 +1,6 @@
-// Chapter 6: every layout with Möller-Trumbore, through chapter 3's BVH4 and BVH8, against
-// the brute-force oracle, ISA against ISA, and layout against layout; what each layout costs.
+// Chapter 6: every layout with Möller-Trumbore, through chapter 2's BVH2 and chapter 3's BVH4
+// and BVH8, against the brute-force oracle, ISA against ISA, layout against layout and width
+// against width; what each layout costs.
 #include <doctest/doctest.h>
 
 #include <stdexcept>
@@ -27,6 +28,10 @@ void check_every_layout(const test::LayoutScene& scene) {
 }
 
 }  // namespace
+
+TEST_CASE("ch06: every layout agrees with the oracle through BVH2, every ISA bit for bit") {
+  for (const test::LayoutScene& scene : test::layout_scenes()) check_every_layout<2>(scene);
+}
 
 TEST_CASE("ch06: every layout agrees with the oracle through BVH4, every ISA bit for bit") {
   for (const test::LayoutScene& scene : test::layout_scenes()) check_every_layout<4>(scene);
@@ -62,6 +67,33 @@ TEST_CASE("ch06: every layout finds the same hits bit for bit") {
 }
 // [ch06-test-same-hits]
 
+// [ch06-test-widths]
+TEST_CASE("ch06: every layout finds the same hits through BVH2, BVH4 and BVH8") {
+  // Different trees, visited in different orders; the closest-hit rule (chapter 2) makes the
+  // answer independent of the order, so each width, with each layout, gives BVH4's bits.
+  for (const test::LayoutScene& scene : test::layout_scenes())
+    for (const TriangleLayout layout : kAllLayouts) {
+      CAPTURE(scene.name);
+      CAPTURE(layout_name(layout));
+      const LayoutBVH<2> bvh2 = build_layout_bvh<2>(scene.mesh, layout, 1);
+      const LayoutBVH<4> bvh4 = build_layout_bvh<4>(scene.mesh, layout, 1);
+      const LayoutBVH<8> bvh8 = build_layout_bvh<8>(scene.mesh, layout, 1);
+      const size_t n = scene.rays.size();
+      std::vector<Hit> h2(n), h4(n), h8(n);
+      std::vector<uint8_t> o2(n), o4(n);
+      intersect(best_isa(), bvh2, scene.rays, h2);
+      intersect(best_isa(), bvh4, scene.rays, h4);
+      intersect(best_isa(), bvh8, scene.rays, h8);
+      occluded(best_isa(), bvh2, scene.rays, o2);
+      occluded(best_isa(), bvh4, scene.rays, o4);
+      int differ = 0;
+      for (size_t i = 0; i < n; ++i)
+        differ += !test::same_bits(h2[i], h4[i]) || !test::same_bits(h8[i], h4[i]) || o2[i] != o4[i];
+      CHECK(differ == 0);
+    }
+}
+// [ch06-test-widths]
+
 TEST_CASE("ch06: bytes per triangle") {
   CHECK(leaf_bytes_per_triangle(TriangleLayout::triangle1) == 48);
   CHECK(leaf_bytes_per_triangle(TriangleLayout::triangle4) == 52);
@@ -79,9 +111,12 @@ TEST_CASE("ch06: bytes per triangle") {
     const double b = double(bvh.bytes()) / double(sphere.size());
     MESSAGE(layout_name(layout) << ": " << b << " bytes per triangle (BVH4 nodes included)");
     CHECK(b <= estimated_bytes_per_triangle(layout, 4));
-    // The estimate for eight children holds too.
+    // The estimates for two and eight children hold too.
     const LayoutBVH<8> bvh8 = build_layout_bvh<8>(sphere, layout, 1);
     CHECK(double(bvh8.bytes()) / double(sphere.size()) <= estimated_bytes_per_triangle(layout, 8));
+    const LayoutBVH<2> bvh2 = build_layout_bvh<2>(sphere, layout, 1);
+    MESSAGE(layout_name(layout) << ": " << double(bvh2.bytes()) / double(sphere.size()) << " bytes per triangle (BVH2)");
+    CHECK(double(bvh2.bytes()) / double(sphere.size()) <= estimated_bytes_per_triangle(layout, 2));
     return b;
   };
   const double t4i = bytes(TriangleLayout::triangle4i), t4v = bytes(TriangleLayout::triangle4v);

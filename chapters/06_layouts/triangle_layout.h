@@ -46,8 +46,8 @@ bool is_precomputed(TriangleLayout layout);
 /// layouts' shared vertices not counted either).
 size_t leaf_bytes_per_triangle(TriangleLayout layout);
 
-/// What choose_default_layout() assumes a layout costs per triangle in a BVH of `width` (4 or 8)
-/// children, tree and padding included: measured on closed procedural meshes (see chapter.md,
+/// What choose_default_layout() assumes a layout costs per triangle in a BVH of `width` (2, 4 or
+/// 8) children, tree and padding included: measured on closed procedural meshes (see chapter.md,
 /// "Bytes per triangle"). The indexed layouts include half a shared vertex per triangle.
 double estimated_bytes_per_triangle(TriangleLayout layout, int width);
 

@@ -13,7 +13,7 @@
 namespace rtk {
 
 // [ch07-layout-kernels]
-/// The kernels of each ISA for a layout BVH of width N (4 or 8) whose leaves are in
+/// The kernels of each ISA for a layout BVH of width N (2, 4 or 8) whose leaves are in
 /// `config.layout`, tested with `config.intersector`: Möller-Trumbore through chapter 6's
 /// layout_kernels, the two tests of this chapter through the same traversal and leaf template.
 /// `structure` is the LayoutBVH's `bvh`. Throws std::invalid_argument for an unsupported pair.

@@ -1,10 +1,10 @@
-// This chapter's tests in chapter 6's layout BVHs of width N = RTK_WIDTH. Compiled once per ISA
-// and per width (cmake/rtk_isa.cmake).
+// This chapter's tests in chapter 6's layout BVHs of width N = RTK_WIDTH (2, 4 or 8). Compiled
+// once per ISA and per width (cmake/rtk_isa.cmake).
 #include <stdexcept>
 
 #include "02_bvh2/leaf_intersector.h"
-#include "03_bvh4/bvhn_traverser.h"
 #include "06_layouts/layout_loads.h"
+#include "06_layouts/layout_traversal.h"
 #include "07_intersectors/layout_intersectors.h"
 #include "07_intersectors/pluecker.h"
 #include "07_intersectors/watertight.h"
@@ -17,10 +17,10 @@ namespace {
 template <int N, class T>
 TraceKernels vertex_layout_kernels(TriangleLayout layout) {
   switch (layout) {
-    case TriangleLayout::triangle1i: return bvhn_batch_kernels<N, LeafIntersector<Triangle1iLayout, T>>();
-    case TriangleLayout::triangle4i: return bvhn_batch_kernels<N, LeafIntersector<Triangle4iLayout, T>>();
-    case TriangleLayout::triangle1v: return bvhn_batch_kernels<N, LeafIntersector<Triangle1vLayout, T>>();
-    case TriangleLayout::triangle4v: return bvhn_batch_kernels<N, LeafIntersector<Triangle4vLayout, T>>();
+    case TriangleLayout::triangle1i: return layout_batch_kernels<N, LeafIntersector<Triangle1iLayout, T>>();
+    case TriangleLayout::triangle4i: return layout_batch_kernels<N, LeafIntersector<Triangle4iLayout, T>>();
+    case TriangleLayout::triangle1v: return layout_batch_kernels<N, LeafIntersector<Triangle1vLayout, T>>();
+    case TriangleLayout::triangle4v: return layout_batch_kernels<N, LeafIntersector<Triangle4vLayout, T>>();
     default: break;
   }
   return {};

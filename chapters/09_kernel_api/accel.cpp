@@ -111,7 +111,7 @@ const BackendEntry& resolve(const AccelConfig& config, Isa isa, size_t triangles
   };
   if (config.tri.empty()) {
     const size_t budget = memory_budget(config);
-    const int width = base == "bvh8" ? 8 : 4;
+    const int width = base == "bvh8" ? 8 : base == "bvh2" ? 2 : 4;
     const TriangleLayout fastest = choose_default_layout(0, isa, width);
     const TriangleLayout chosen = choose_default_layout(triangles, isa, width, budget);
     if (const BackendEntry* e = row_for({chosen, IntersectorKind::moeller})) {

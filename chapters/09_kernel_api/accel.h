@@ -9,7 +9,7 @@
 /// - `tri`: the leaf triangle layout (`triangle1`, `triangle4`, `triangle8`, `triangle1i`,
 ///   `triangle4i`, `triangle1v`, `triangle4v`: chapter 6) optionally followed by the intersector
 ///   (chapter 7), `.moeller`, `.pluecker`, `.watertight`, or `.fast` / `.accurate` (the fastest
-///   or most accurate intersector that layout has). BVH2 has triangle1 leaves only.
+///   or most accurate intersector that layout has). Every width takes every layout.
 /// Only combinations that the chapters implement are accepted; any other is refused with a
 /// message that lists the supported ones (supported_accels(), supported_tris()). Empty strings
 /// mean the defaults, which follow the guide's advice adapted to the ISA: the node width the

@@ -91,8 +91,8 @@ TEST_CASE("ch09: every accepted configuration agrees with brute force on every I
       ++configs;
     }
   }
-  // bvh2: triangle1.moeller with both splits; bvh4 and bvh8: all 15 layout configurations.
-  CHECK(configs == 2 + 4 * 15);
+  // bvh2, bvh4 and bvh8: all 15 layout configurations with both splits.
+  CHECK(configs == 6 * 15);
 }
 
 // [ch09-test-one-answer]
@@ -143,13 +143,12 @@ TEST_CASE("ch09: for one intersector, every structure, layout and ISA gives the 
 TEST_CASE("ch09: the table offers every configuration chapter 6 supports, with both split strategies") {
   std::set<std::string> chapter6;
   for (const TriangleConfig& c : supported_triangle_configs()) chapter6.insert(c.name());
-  for (const std::string base : {"bvh4", "bvh8"})
+  for (const std::string base : {"bvh2", "bvh4", "bvh8"})
     for (const std::string split : {".objectsplit", ".spatialsplit"}) {
       const std::vector<std::string> tris = supported_tris(base + split);
       CHECK(std::set<std::string>(tris.begin(), tris.end()) == chapter6);
       CHECK(tris.size() == chapter6.size());
     }
-  CHECK(supported_tris("bvh2.spatialsplit") == std::vector<std::string>{"triangle1.moeller"});
   const std::vector<std::string> accels = supported_accels();
   for (const std::string name : {"bvh2.objectsplit", "bvh2.spatialsplit", "bvh4.objectsplit", "bvh4.spatialsplit",
                                  "bvh8.objectsplit", "bvh8.spatialsplit"})
@@ -169,6 +168,8 @@ TEST_CASE("ch09: .fast and .accurate resolve per layout, and bare names take the
   CHECK(tri_of("bvh8.spatialsplit", "triangle4v") == "triangle4v.moeller");
   CHECK(tri_of("bvh4", "triangle1v.pluecker") == "triangle1v.pluecker");
   CHECK(tri_of("bvh2", "triangle1.accurate") == "triangle1.moeller");
+  CHECK(tri_of("bvh2", "triangle4i.accurate") == "triangle4i.watertight");
+  CHECK(tri_of("bvh2.spatialsplit", "triangle8") == "triangle8.moeller");
   AccelConfig c;
   c.accel = "bvh4";
   CHECK(resolve_config(c).accel == "bvh4.objectsplit");
@@ -192,9 +193,10 @@ TEST_CASE("ch09: the default layout follows chapter 6's rule and says why") {
     const Accel lean(mesh, config);
     CHECK(lean.info().tri == "triangle4i.moeller");
     CHECK(contains(lean.info().choice, "leanest"));
-    // BVH2 has one kind of leaf, whatever the ISA.
+    // BVH2 follows the same rule.
     config.accel = "bvh2";
-    CHECK(resolve_config(config).tri == "triangle1.moeller");
+    config.memory_budget = 0;
+    CHECK(resolve_config(config).tri == std::string(layout_name(choose_default_layout(0, isa, 2))) + ".moeller");
   }
 }
 
@@ -215,11 +217,14 @@ TEST_CASE("ch09: unsupported configurations are refused with the supported list"
   CHECK(contains(refusal(c), "triangle4i.watertight"));
   c.tri = "triangle4.fastest";
   CHECK(contains(refusal(c), "-tri"));
-  c.accel = "bvh2.spatialsplit";
-  c.tri = "triangle4";
+  c.accel = "bvh2.spatialsplit";  // BVH2 refuses what BVH4 refuses, and names the same list
+  c.tri = "triangle4.watertight";
   why = refusal(c);
-  CHECK(contains(why, "not available with bvh2.spatialsplit"));
-  CHECK(contains(why, "triangle1.moeller"));
+  CHECK(contains(why, "-tri"));
+  CHECK(contains(why, "supported with bvh2.spatialsplit"));
+  CHECK(contains(why, "triangle4v.watertight"));
+  c.tri = "triangle4";
+  CHECK(refusal(c) == "");
   c.tri = "";
   CHECK(refusal(c) == "");
 }

@@ -20,7 +20,7 @@ def main():
         scene, width, layout = parts[1], parts[3], parts[4].split(".")[0]
         scenes += [scene] if scene not in scenes else []
         size[(scene, width, layout)] = b["bytes/tri"]
-    cols = [(s, w) for s in scenes for w in ("bvh4", "bvh8")]
+    cols = [(s, w) for s in scenes for w in ("bvh2", "bvh4", "bvh8")]
     print("| layout | " + " | ".join(f"{s}, {w.upper()}" for s, w in cols) + " |")
     print("|---|" + "---:|" * len(cols))
     for layout in LAYOUTS:
