@@ -9,6 +9,7 @@
 #include "10_sampling/frame.h"
 #include "11_materials/dielectric.h"
 #include "11_materials/lambertian.h"
+#include "11_materials/metallic_paint.h"
 #include "11_materials/plastic.h"
 #include "11_materials/rough_conductor.h"
 #include "11_materials/specular.h"
@@ -19,7 +20,7 @@ namespace rtk {
 /// Every scattering model of chapter 11. A closed set in a variant rather than a class
 /// hierarchy: a BSDF is made at every hit, and a variant needs no allocation there.
 using BsdfModel = std::variant<Lambertian, Mirror, SmoothConductor, RoughConductor,
-                               SmoothDielectric, ThinDielectric, Plastic, Velvet>;
+                               SmoothDielectric, ThinDielectric, Plastic, Velvet, MetallicPaint>;
 
 /// Whether a model scatters only into delta lobes (mirror, smooth metal, glass): light
 /// sampling is useless there, and an integrator skips it.
