@@ -324,7 +324,6 @@ void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t c
       path.filter_weight = fs.weight;
       path.film = film;
       path.ray = camera_.generate_ray(film, lens, time);
-      if (camera_.params().vignetting) [[unlikely]] path.throughput = Color(camera_.vignetting(film));
       live.push_back(static_cast<uint32_t>(i));
     }
     // Rounds: one batch of closest-hit rays, shading, one batch of shadow rays.
@@ -347,17 +346,24 @@ void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t c
         stats.kernel_seconds += timer.seconds();
         stats.rays += blocked.size();
         stats.shadow_rays += blocked.size();
+        // In a scene with transparency, what a blocked shadow ray still lets through.
+        if (transparency_) [[unlikely]]
+          for (size_t k = 0; k < blocked.size(); ++k)
+            if (blocked[k]) {
+              Path& path = paths[batch.shadow_path[k]];
+              path.radiance += path.pending * transmittance(batch.shadow_rays[k], stats);
+            }
         for (size_t k = 0; k < blocked.size(); ++k) {
           Path& path = paths[batch.shadow_path[k]];
-          if (!blocked[k])
-            path.radiance += path.pending;
-          else if (transparency_) [[unlikely]]
-            path.radiance += path.pending * transmittance(batch.shadow_rays[k], stats);
+          if (!blocked[k]) path.radiance += path.pending;
           path.pending = Color{};
         }
       }
       live.swap(batch.next);
     }
+    // Natural vignetting (chapter 10) scales what each camera path brought back.
+    if (camera_.params().vignetting) [[unlikely]]
+      for (Path& path : paths) path.radiance *= camera_.vignetting(path.film);
     for (const Path& path : paths) fb.add_sample(path.x, path.y, path.radiance, path.filter_weight);
     stats.samples += n;
   }
