@@ -28,6 +28,7 @@ void commit_camera(Device& device, const Handle& camera, const CameraParams& par
   device.set(camera, "up", params.up);
   device.set(camera, "fov", params.fov_degrees);
   device.set(camera, "rightHanded", params.right_handed ? 1 : 0);
+  device.set(camera, "vignetting", params.vignetting ? 1 : 0);
   if (camera.type() == "thinlens") {
     device.set(camera, "radius", params.lens_radius);
     device.set(camera, "focalDistance", params.focal_distance);

@@ -63,4 +63,18 @@ Ray Camera::generate_ray(Vec2f film, Vec2f lens, float time) const {
 }
 // [ch10-camera-ray]
 
+// [ch10-vignetting]
+float Camera::vignetting(Vec2f film) const {
+  if (!params_.vignetting) return 1.0f;
+  // The chief ray through the film point makes the angle theta with the axis, where
+  // cos(theta) = image distance / length of the pinhole direction. Irradiance on the film
+  // falls as cos^4(theta): once for the lens seen obliquely (its projected area), twice for the
+  // inverse square of the longer way to the film, once for the film met obliquely.
+  const float x = (film.x - 0.5f) * params_.aspect, y = 0.5f - film.y;
+  const float d2 = image_distance_ * image_distance_;
+  const float cos2 = d2 / (x * x + y * y + d2);
+  return cos2 * cos2;
+}
+// [ch10-vignetting]
+
 }  // namespace rtk

@@ -19,6 +19,7 @@ struct CameraParams {
   float lens_radius = 0.0f;   ///< -radius: 0 is a pinhole; > 0 a thin lens (depth of field)
   float focal_distance = 0;   ///< distance to the plane in focus; 0 means |look_at - position|
   bool right_handed = false;  ///< -righthanded: the image mirrored left to right (Embree 2/3)
+  bool vignetting = false;    ///< -vignetting: the natural cos^4 falloff toward the corners
 };
 
 /// A perspective camera in the Embree 1.1 convention: Z = normalize(look_at - position),
@@ -40,6 +41,11 @@ class Camera {
   /// square, mapped onto the lens disk), at shutter time `time` in [0, 1] (motion blur).
   /// The direction is normalised, tnear = 0 and tfar = infinity.
   Ray generate_ray(Vec2f film, Vec2f lens, float time) const;
+
+  /// The share of the light from the scene that reaches film point `film`: cos^4 of the
+  /// angle between the view axis and the ray through the lens centre with `vignetting`
+  /// (natural vignetting), 1 without it.
+  float vignetting(Vec2f film) const;
 
   /// The parameters the camera was made with (focal distance resolved).
   const CameraParams& params() const { return params_; }

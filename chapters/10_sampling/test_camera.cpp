@@ -167,3 +167,32 @@ TEST_CASE("ch10: bad camera parameters are refused with a reason") {
     CHECK(std::string(e.what()).find("parallel") != std::string::npos);
   }
 }
+
+TEST_CASE("ch10: natural vignetting falls off as cos^4 of the angle to the view axis") {
+  CameraParams p;
+  p.position = {0, 0, 0};
+  p.look_at = {0, 0, 1};
+  p.fov_degrees = 70.0f;
+  p.aspect = 1.5f;
+  // Off by default: every film point gets all the light.
+  CHECK(Camera(p).vignetting({0.0f, 0.0f}) == 1.0f);
+  CHECK(Camera(p).vignetting({0.9f, 0.3f}) == 1.0f);
+  p.vignetting = true;
+  const Camera camera(p);
+  CHECK(camera.vignetting({0.5f, 0.5f}) == doctest::Approx(1.0f));
+  // The top edge's centre is half the field of view off the axis.
+  const double half = 35.0 * std::numbers::pi / 180.0;
+  CHECK(camera.vignetting({0.5f, 0.0f}) == doctest::Approx(std::pow(std::cos(half), 4)).epsilon(1e-5));
+  // Anywhere: the angle between the view axis and the ray through the lens centre, as the
+  // camera generates it, to the fourth power of its cosine.
+  Pcg32 rng(77);
+  for (int i = 0; i < 100; ++i) {
+    const Vec2f film{rng.next_float(), rng.next_float()};
+    const Ray ray = camera.generate_ray(film, {0.5f, 0.5f}, 0.0f);
+    const double c = dot(normalize(ray.dir), camera.forward());
+    CHECK(camera.vignetting(film) == doctest::Approx(c * c * c * c).epsilon(1e-5));
+  }
+  // A thin lens darkens its corners as the pinhole does (the law follows the chief ray).
+  p.lens_radius = 0.1f;
+  CHECK(Camera(p).vignetting({0.0f, 1.0f}) == doctest::Approx(camera.vignetting({0.0f, 1.0f})));
+}

@@ -3,12 +3,15 @@
 /// frame. This is what the path tracer (next chapters) asks for at every hit.
 #pragma once
 
+#include <cstddef>
 #include <optional>
+#include <utility>
 #include <variant>
 
 #include "10_sampling/frame.h"
 #include "11_materials/dielectric.h"
 #include "11_materials/lambertian.h"
+#include "11_materials/metallic_paint.h"
 #include "11_materials/plastic.h"
 #include "11_materials/rough_conductor.h"
 #include "11_materials/specular.h"
@@ -19,7 +22,20 @@ namespace rtk {
 /// Every scattering model of chapter 11. A closed set in a variant rather than a class
 /// hierarchy: a BSDF is made at every hit, and a variant needs no allocation there.
 using BsdfModel = std::variant<Lambertian, Mirror, SmoothConductor, RoughConductor,
-                               SmoothDielectric, ThinDielectric, Plastic, Velvet>;
+                               SmoothDielectric, ThinDielectric, Plastic, Velvet, MetallicPaint>;
+
+/// Calls f with the model a BsdfModel holds: a chain of index tests that the compiler inlines
+/// into the caller (std::visit's dispatch over nine models is not inlined by GCC, which costs a
+/// call per BSDF query).
+template <size_t I = 0, class F>
+inline decltype(auto) dispatch_model(const BsdfModel& model, F&& f) {
+  if constexpr (I + 1 == std::variant_size_v<BsdfModel>) {
+    return f(*std::get_if<I>(&model));
+  } else {
+    if (model.index() == I) return f(*std::get_if<I>(&model));
+    return dispatch_model<I + 1>(model, std::forward<F>(f));
+  }
+}
 
 /// Whether a model scatters only into delta lobes (mirror, smooth metal, glass): light
 /// sampling is useless there, and an integrator skips it.
@@ -47,12 +63,12 @@ class Bsdf {
   /// f(wo, wi), without the cosine; zero for delta lobes.
   Color eval(Vec3f wo, Vec3f wi) const {
     const Vec3f lo = frame_.to_local(wo), li = frame_.to_local(wi);
-    return std::visit([&](const auto& m) { return m.eval(lo, li); }, model_);
+    return dispatch_model(model_, [&](const auto& m) { return m.eval(lo, li); });
   }
   /// The solid-angle density with which sample() returns wi (non-delta lobes only).
   float pdf(Vec3f wo, Vec3f wi) const {
     const Vec3f lo = frame_.to_local(wo), li = frame_.to_local(wi);
-    return std::visit([&](const auto& m) { return m.pdf(lo, li); }, model_);
+    return dispatch_model(model_, [&](const auto& m) { return m.pdf(lo, li); });
   }
   /// A sampled direction (world space) from a 1D lobe choice and a 2D sample.
   std::optional<BsdfSample> sample(Vec3f wo, float u_lobe, Vec2f u) const {

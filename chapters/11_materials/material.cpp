@@ -74,11 +74,42 @@ Bsdf Material::make_bsdf(const Frame& frame, Vec2f uv) const {
     if (auto* l = std::get_if<Lambertian>(&model)) l->reflectance = c;
     if (auto* p = std::get_if<Plastic>(&model)) p->pigment = c;
     if (auto* v = std::get_if<Velvet>(&model)) v->reflectance = c;
+    if (auto* q = std::get_if<MetallicPaint>(&model)) q->shade = c;
   }
   return Bsdf(frame, model);
 }
 
+float Material::opacity_at(Vec2f uv) const {
+  if (!opacity_map) return opacity;
+  return std::clamp(opacity * average(opacity_map->eval(uv)), 0.0f, 1.0f);
+}
+
+// [ch11-bump]
+Vec3f Material::bumped_normal(Vec3f n, Vec3f dpdu, Vec3f dpdv, Vec2f uv) const {
+  if (!bump) return n;
+  // The height's slopes by central differences, half a texel to each side of uv (a
+  // thousandth of the unit square for a texture that is not an image).
+  float du = 1e-3f, dv = 1e-3f;
+  if (const auto* image = dynamic_cast<const ImageTexture*>(bump.get()))
+    du = 0.5f / image->width(), dv = 0.5f / image->height();
+  auto height = [&](float u, float v) { return bump_scale * average(bump->eval({u, v})); };
+  const float h_u = (height(uv.x + du, uv.y) - height(uv.x - du, uv.y)) / (2.0f * du);
+  const float h_v = (height(uv.x, uv.y + dv) - height(uv.x, uv.y - dv)) / (2.0f * dv);
+  // The surface displaced by h along n has tangents dpdu + h_u n and dpdv + h_v n (the
+  // change of n itself is neglected: the heights are small); their cross product is the
+  // displaced surface's normal, turned to n's side.
+  const Vec3f m = cross(dpdu + h_u * n, dpdv + h_v * n);
+  const float len = length(m);
+  if (!(len > 0.0f) || !std::isfinite(len)) return n;
+  return dot(m, n) < 0.0f ? -m / len : m / len;
+}
+// [ch11-bump]
+
 namespace {
+
+// The narrowest flake lobe (glitterSpread 0): a GGX width below this is sampled and
+// evaluated with large rounding errors in single precision.
+constexpr float kMinFlakeAlpha = 0.01f;
 
 std::string lower(std::string_view s) {
   std::string r(s);
@@ -118,6 +149,7 @@ void diffuse(Material& m, const ParameterList& p, const std::string& name, Color
     if (auto* l = std::get_if<Lambertian>(&m.prototype)) l->reflectance = c->color();
     if (auto* q = std::get_if<Plastic>(&m.prototype)) q->pigment = c->color();
     if (auto* v = std::get_if<Velvet>(&m.prototype)) v->reflectance = c->color();
+    if (auto* q = std::get_if<MetallicPaint>(&m.prototype)) q->shade = c->color();
   } else {
     m.albedo = std::move(t);
   }
@@ -192,12 +224,19 @@ Material make_material(std::string_view name_in, const ParameterList& p,
     m = make_plastic(p, "pigmentColor", Color(0.5f), p.get_float("eta", 1.4f),
                      p.get_float("roughness", 0.01f));
   } else if (name == "metallicpaint") {
-    m = make_plastic(p, "shadeColor", Color(0.5f), p.get_float("eta", 1.45f), 0.0f);
-    if (!is_black(p.get_color("glitterColor", Color())) || p.has("glitterSpread"))
-      warn(
-          "MetallicPaint: glitter flakes are not modelled; rendered as a smooth-coated Plastic of "
-          "colour shadeColor");
-    p.get_float("glitterSpread", 0.0f);
+    m.name = "MetallicPaint";
+    MetallicPaint paint;
+    paint.eta = positive(p.get_float("eta", paint.eta), "eta");
+    paint.glitter = non_negative(p.get_color("glitterColor", Color()), "glitterColor");
+    if (paint.glitter.r > 1 || paint.glitter.g > 1 || paint.glitter.b > 1)
+      throw std::invalid_argument("glitterColor must be at most 1 (the flakes' share of the light)");
+    // glitterSpread reads like a roughness (the reciprocal of a power-cosine exponent). A
+    // spread of 0, flakes lying flat, is taken as the narrowest lobe that is still sampled
+    // stably.
+    const float spread = non_negative(p.get_float("glitterSpread", 1.0f), "glitterSpread");
+    paint.flakes = GgxDistribution{std::max(roughness_to_alpha(spread), kMinFlakeAlpha)};
+    m.prototype = paint;
+    diffuse(m, p, "shadeColor", Color(0.5f));
   } else if (name == "obj") {
     // The MTL model: a diffuse colour, optionally a specular highlight.
     const Color ks = non_negative(p.get_color("Ks", Color()), "Ks");
@@ -215,8 +254,13 @@ Material make_material(std::string_view name_in, const ParameterList& p,
                        ns > 0.0f ? 1.0f / ns : 0.0f);
     }
     if (p.has("map_Kd")) p.get_color("Kd", Color());  // superseded by the map, not unused
-    if (p.get_float("d", 1.0f) < 1.0f)
-      warn("OBJ: dissolve d < 1 (transparency) is not modelled; the surface is opaque");
+    // d, the dissolve: the share of the surface that is there (Tr = 1 - d is read as d).
+    m.opacity = std::clamp(non_negative(p.get_float("d", 1.0f), "d"), 0.0f, 1.0f);
+    m.opacity_map = p.get_texture("map_d");
+    // The bump map: heights in scene units per unit of texture value, scaled by -bm.
+    m.bump = p.get_texture("map_Bump");
+    m.bump_scale = p.get_float("bump_scale", 1.0f);
+    if (!std::isfinite(m.bump_scale)) throw std::invalid_argument("bump_scale must be finite");
     if (!is_black(p.get_color("Tf", Color()))) warn("OBJ: transmission filter Tf is not modelled");
     // Ka, the ambient colour, has no meaning in a path tracer, whose ambient light is the
     // light that bounces; Embree 1.1 ignored it too (its lamps give Ka 20), so it is read

@@ -64,11 +64,22 @@ struct Material {
   BsdfModel prototype = Lambertian{};     ///< the BSDF model with its constant parameters
   std::shared_ptr<const Texture> albedo;  ///< the diffuse colour's texture, or null
   Color emission;                         ///< emitted radiance (OBJ Ke, or "emission")
+  float opacity = 1.0f;                   ///< the share of the surface that is there (OBJ d)
+  std::shared_ptr<const Texture> opacity_map;  ///< OBJ map_d: opacity point by point, or null
+  std::shared_ptr<const Texture> bump;         ///< OBJ map_Bump: a height field, or null
+  float bump_scale = 1.0f;                     ///< OBJ -bm: heights are scale * texture value
 
   /// The BSDF at a point with shading frame `frame` and texture coordinates `uv`.
   Bsdf make_bsdf(const Frame& frame, Vec2f uv) const;
   /// Whether the surface emits light.
   bool is_emissive() const { return !is_black(emission); }
+  /// Whether light may pass through the surface without meeting it (d < 1 or a map_d).
+  bool transparent() const { return opacity < 1.0f || opacity_map != nullptr; }
+  /// The opacity at `uv`, in [0, 1]: opacity times the map's value (the mean of its channels).
+  float opacity_at(Vec2f uv) const;
+  /// The shading normal `n` tilted by the bump map at `uv`, for a surface whose position
+  /// changes by dpdu and dpdv per unit of u and v; `n` itself without a bump map.
+  Vec3f bumped_normal(Vec3f n, Vec3f dpdu, Vec3f dpdv, Vec2f uv) const;
 };
 // [ch11-material]
 
@@ -82,11 +93,14 @@ struct Material {
 ///   - Plastic: pigmentColor, eta, roughness;
 ///   - Velvet: reflectance (colour or texture), backScattering, horizonScatteringColor,
 ///     horizonScatteringFallOff (velvet.h);
-///   - MetallicPaint: shadeColor, eta (glitterColor and glitterSpread are not modelled:
-///     a smooth-coated Plastic, with a warning);
+///   - MetallicPaint: shadeColor (colour or texture), eta, glitterColor (the flakes' share
+///     of the light, 0 to 1; default 0: no flakes), glitterSpread (the flakes' tilt, read
+///     like a roughness; default 1) (metallic_paint.h);
 ///   - OBJ (the MTL keys): Kd or map_Kd; Ks > 0 becomes a Plastic whose roughness is 1 / Ns
-///     (a warning says that Ks's magnitude is replaced by the Fresnel term); d < 1 and Tf
-///     are ignored with a warning, Ka without one (as Embree 1.1 did); Ke is the emission.
+///     (a warning says that Ks's magnitude is replaced by the Fresnel term); Tf
+///     is ignored with a warning, Ka without one (as Embree 1.1 did); Ke is the emission;
+///     d (or 1 - Tr) is the opacity and map_d its texture; map_Bump (or bump) a height
+///     texture, scaled by bump_scale (the -bm option).
 /// Any material may carry "emission" (a colour). An unknown name becomes a grey Matte, and
 /// every parameter that was not used is reported, both through `warn`. Invalid values (a
 /// negative index of refraction, a NaN) throw std::invalid_argument.

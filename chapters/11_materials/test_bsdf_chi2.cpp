@@ -26,6 +26,8 @@ struct Case {
 double delta_probability(const BsdfModel& model, Vec3f wo) {
   if (const auto* p = std::get_if<Plastic>(&model); p && p->smooth())
     return p->coat_probability(std::fabs(wo.z));
+  if (const auto* p = std::get_if<MetallicPaint>(&model))
+    return p->coat_probability(std::fabs(wo.z));
   return 0.0;
 }
 
@@ -42,6 +44,10 @@ std::vector<Case> cases() {
                  Plastic{Color(0.5f, 0.3f, 0.2f), 1.5f, GgxDistribution{alpha}}});
   c.push_back({"Plastic smooth", Plastic{Color(0.5f, 0.3f, 0.2f), 1.5f, GgxDistribution{0.0f}}});
   c.push_back({"Velvet", Velvet{Color(0.4f), 0.5f, Color(0.6f), 10.0f}});
+  for (float alpha : {0.1f, 0.5f})
+    c.push_back({"MetallicPaint flakes alpha=" + std::to_string(alpha).substr(0, 4),
+                 MetallicPaint{Color(0.5f, 0.0f, 0.0f), Color(0.3f, 0.3f, 0.2f), 1.45f,
+                               GgxDistribution{alpha}}});
   return c;
 }
 

@@ -30,6 +30,9 @@ std::vector<std::pair<std::string, BsdfModel>> all_models() {
       {"Plastic 0.3", Plastic{Color(1.0f), 1.5f, GgxDistribution{0.3f}}},
       {"Velvet", Velvet{Color(0.5f, 0.3f, 0.2f), 0.5f, Color(0.5f, 0.6f, 0.7f), 10.0f}},
       {"Velvet wide sheen", Velvet{Color(0.2f), 3.0f, Color(0.8f), 1.0f}},
+      {"MetallicPaint", MetallicPaint{Color(0.5f, 0.1f, 0.1f), Color(0.4f), 1.45f, GgxDistribution{0.2f}}},
+      // All flakes, white: the layer under the coat reflects everything it receives.
+      {"MetallicPaint all flakes", MetallicPaint{Color(0.5f), Color(1.0f), 1.5f, GgxDistribution{0.05f}}},
   };
 }
 
@@ -255,4 +258,34 @@ TEST_CASE("ch11: the world-space Bsdf rotates into the shading frame") {
   CHECK_FALSE(mirror.transmissive());
   CHECK(Bsdf(Frame(n), ThinDielectric{}).transmissive());
   CHECK_FALSE(Bsdf(Frame(n), Plastic{}).delta_only());
+}
+
+TEST_CASE("ch11: MetallicPaint: no glitter is the smooth Plastic; the flakes add a lobe around the mirror direction") {
+  Pcg32 rng(3600);
+  const Color shade(0.5f, 0.1f, 0.1f);
+  const MetallicPaint plain{shade, Color(0.0f), 1.45f, GgxDistribution{0.2f}};
+  const Plastic plastic{shade, 1.45f, GgxDistribution{0.0f}};
+  for (int i = 0; i < 200; ++i) {
+    const Vec3f a = random_direction(rng), b = random_direction(rng);
+    CHECK(close(plain.eval(a, b), plastic.eval(a, b), 1e-5f));
+    CHECK(plain.pdf(a, b) == doctest::Approx(plastic.pdf(a, b)).epsilon(1e-5));
+    CHECK(plain.coat_probability(std::fabs(a.z)) ==
+          doctest::Approx(plastic.coat_probability(std::fabs(a.z))).epsilon(1e-5));
+  }
+  // With flakes, the excess over the pigment's diffuse term is the flakes' GGX lobe: largest
+  // for the mirror direction, and exactly glitter D(h) G2 (1 - F_o)(1 - F_i) / (4 cos_o cos_i).
+  const Color glitter(0.4f, 0.3f, 0.2f);
+  const MetallicPaint paint{shade, glitter, 1.45f, GgxDistribution{0.2f}};
+  const Vec3f wo = normalize(Vec3f{0.5f, 0.0f, 1.0f});
+  const Vec3f mirror{-wo.x, -wo.y, wo.z};
+  const float f_mirror = paint.eval(wo, mirror).r;
+  for (float tilt : {0.1f, 0.3f, 0.6f}) {
+    const Vec3f off = normalize(Vec3f{mirror.x + tilt, 0.2f * tilt, mirror.z});
+    CHECK(paint.eval(wo, off).r < f_mirror);
+    const Vec3f h = normalize(wo + off);
+    const float t = (1 - fresnel_dielectric(wo.z, 1.45f)) * (1 - fresnel_dielectric(off.z, 1.45f));
+    const Color want = ((Color(1.0f) - glitter) * shade * kInvPi +
+                        glitter * (paint.flakes.d(h) * paint.flakes.g2(wo, off) / (4 * wo.z * off.z))) * t;
+    CHECK(close(paint.eval(wo, off), want, 1e-4f));
+  }
 }

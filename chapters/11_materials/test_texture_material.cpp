@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -251,9 +252,16 @@ TEST_CASE("ch11: materials are built from the Embree scene names") {
     paint.set("eta", 1.45f);
     paint.set("shadeColor", Color(0.5f, 0, 0));
     paint.set("glitterColor", Color(0.5f));
+    paint.set("glitterSpread", 0.2f);
     const Material car = make_material("MetallicPaint", paint, warn);
-    CHECK(std::get<Plastic>(car.prototype).pigment == Color(0.5f, 0, 0));
-    CHECK(warnings.size() == 1);
+    REQUIRE(std::holds_alternative<MetallicPaint>(car.prototype));
+    const MetallicPaint& mp = std::get<MetallicPaint>(car.prototype);
+    CHECK(mp.shade == Color(0.5f, 0, 0));
+    CHECK(mp.glitter == Color(0.5f));
+    CHECK(mp.flakes.alpha == doctest::Approx(roughness_to_alpha(0.2f)));
+    CHECK(warnings.empty());  // the glitter is modelled
+    paint.set("glitterColor", Color(1.5f));  // more than all the light
+    CHECK_THROWS_AS(make_material("MetallicPaint", paint, warn), std::invalid_argument);
   }
   SUBCASE("OBJ: diffuse, specular approximated, emission") {
     ParameterList p;
@@ -298,4 +306,78 @@ TEST_CASE("ch11: materials are built from the Embree scene names") {
     q.set("reflectance", Color(NAN, 0, 0));
     CHECK_THROWS_AS(make_material("Matte", q, warn), std::invalid_argument);
   }
+}
+
+namespace {
+// A height field h(u, v) = k u, exact between any two points (no texels).
+struct Ramp final : Texture {
+  float k;
+  explicit Ramp(float slope) : k(slope) {}
+  Color eval(Vec2f uv) const override { return Color(k * uv.x); }
+};
+}  // namespace
+
+TEST_CASE("ch11: bump maps: a constant height changes nothing, a ramp tilts the normal by atan(slope)") {
+  const Vec3f n{0, 0, 1}, dpdu{1, 0, 0}, dpdv{0, 1, 0};
+  Material m;
+  CHECK(m.bumped_normal(n, dpdu, dpdv, {0.3f, 0.4f}) == n);  // no map
+  m.bump = std::make_shared<ConstantTexture>(Color(0.7f));
+  const Vec3f flat = m.bumped_normal(n, dpdu, dpdv, {0.3f, 0.4f});
+  CHECK(flat.x == doctest::Approx(0.0f));
+  CHECK(flat.y == doctest::Approx(0.0f));
+  CHECK(flat.z == doctest::Approx(1.0f));
+  for (float k : {0.1f, 0.5f, 2.0f}) {
+    for (float scale : {1.0f, 0.25f}) {
+      m.bump = std::make_shared<Ramp>(k);
+      m.bump_scale = scale;
+      const Vec3f b = m.bumped_normal(n, dpdu, dpdv, {0.3f, 0.4f});
+      INFO("slope ", k, " scale ", scale);
+      // The surface z = s k x has the normal (-s k, 0, 1) / |.|: tilted by atan(s k) away
+      // from the uphill direction.
+      CHECK(std::acos(std::clamp(dot(b, n), -1.0f, 1.0f)) == doctest::Approx(std::atan(scale * k)).epsilon(1e-4));
+      CHECK(b.x < 0.0f);
+      CHECK(b.y == doctest::Approx(0.0f));
+      CHECK(length(b) == doctest::Approx(1.0f));
+      // Texture u running the other way (-x) mirrors the tilt; the normal stays on n's side.
+      const Vec3f mirrored = m.bumped_normal(n, -dpdu, dpdv, {0.3f, 0.4f});
+      CHECK(mirrored.x == doctest::Approx(-b.x));
+      CHECK(mirrored.z > 0.0f);
+    }
+  }
+  // The same ramp as an image, read bilinearly: the same tilt between texel centres.
+  std::vector<Color> texels;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 8; ++x) texels.push_back(Color(0.5f * (x + 0.5f) / 8.0f));
+  m.bump = std::make_shared<ImageTexture>(8, 4, texels, WrapMode::clamp);
+  m.bump_scale = 1.0f;
+  const Vec3f b = m.bumped_normal(n, dpdu, dpdv, {0.4f, 0.5f});
+  CHECK(std::acos(dot(b, n)) == doctest::Approx(std::atan(0.5f)).epsilon(1e-4));
+}
+
+TEST_CASE("ch11: opacity: d times the map's value, clamped to [0, 1]") {
+  Material m;
+  CHECK_FALSE(m.transparent());
+  CHECK(m.opacity_at({0.5f, 0.5f}) == 1.0f);
+  m.opacity = 0.5f;
+  CHECK(m.transparent());
+  CHECK(m.opacity_at({0.5f, 0.5f}) == 0.5f);
+  m.opacity = 1.0f;
+  m.opacity_map = std::make_shared<ImageTexture>(2, 1, std::vector<Color>{Color(1.0f), Color(0.0f)},
+                                                 WrapMode::clamp, TextureLookup::nearest);
+  CHECK(m.transparent());
+  CHECK(m.opacity_at({0.2f, 0.5f}) == 1.0f);
+  CHECK(m.opacity_at({0.8f, 0.5f}) == 0.0f);
+  ParameterList p;
+  p.set("Kd", Color(0.5f));
+  p.set("d", 0.25f);
+  p.set("map_d", std::shared_ptr<const Texture>(m.opacity_map));
+  p.set("map_Bump", std::shared_ptr<const Texture>(m.opacity_map));
+  p.set("bump_scale", 0.1f);
+  std::vector<std::string> warnings;
+  const Material obj = make_material("OBJ", p, [&](const std::string& w) { warnings.push_back(w); });
+  CHECK(warnings.empty());
+  CHECK(obj.opacity == 0.25f);
+  CHECK(obj.opacity_map == m.opacity_map);
+  CHECK(obj.bump == m.opacity_map);
+  CHECK(obj.bump_scale == 0.1f);
 }

@@ -27,6 +27,10 @@ float scene_radius(const TriangleMesh& mesh) {
 // the light's own triangle there.
 constexpr float kShadowShortening = 1.0f - 1e-4f;
 
+// A ray passes through at most this many transparent surfaces; at the next it stops as if the
+// surface were opaque (a bound on the work, not a limit any real scene meets).
+constexpr uint16_t kMaxPassThrough = 256;
+
 }  // namespace
 
 // The state of one camera path between two batches of rays.
@@ -41,6 +45,7 @@ struct PathTracer::Path {
   int depth = 0;          // scattering events so far
   float prev_pdf = 0.0f;  // the density of the BSDF sample that made the current ray
   bool prev_delta = true; // whether it came from a delta lobe (or the camera): no MIS then
+  uint16_t passes = 0;    // transparent surfaces passed through (in prev_delta's padding)
   Vec3f prev_p, prev_n;   // the previous vertex and its light-query normal (for pdf_li)
   Ray ray;
 };
@@ -71,7 +76,51 @@ PathTracer::PathTracer(const RenderScene& scene, const RayKernels& kernels,
     if (light.is_infinite()) infinite_lights_.push_back(static_cast<uint32_t>(i));
   }
   if (!power.empty()) light_choice_ = std::make_unique<Distribution1D>(power);
+  transparency_ = scene.has_transparency();
 }
+
+// [ch13-transmittance]
+// A shadow ray that the any-hit query found blocked, in a scene with transparent surfaces:
+// followed from surface to surface, each transparent one letting the share 1 - opacity of the
+// light through, until it reaches the light (the share left) or an opaque surface (none).
+float PathTracer::transmittance(Ray ray, RenderStats& stats) const {
+  float through = 1.0f;
+  for (uint16_t pass = 0; pass < kMaxPassThrough; ++pass) {
+    Hit hit;
+    kernels_.intersect({&ray, 1}, {&hit, 1});
+    ++stats.rays;
+    if (!hit.found()) return through;
+    const Material& m = scene_.materials[scene_.triangle_material[hit.prim]];
+    if (!m.transparent()) return 0.0f;
+    through *= 1.0f - m.opacity_at(scene_.texcoords(hit.prim, hit.u, hit.v));
+    if (!(through > 0.0f)) return 0.0f;
+    // On beyond the surface, for the rest of the segment.
+    const auto c = scene_.corners(hit.prim, ray.time);
+    const Vec3f ng = cross(c[1] - c[0], c[2] - c[0]);
+    const Vec3f p = c[0] * (1.0f - hit.u - hit.v) + c[1] * hit.u + c[2] * hit.v;
+    ray.org = offset_ray_origin(p, dot(ray.dir, ng) > 0.0f ? ng : -ng);
+    ray.tfar -= hit.t;
+    if (!(ray.tfar > 0.0f)) return through;
+  }
+  return 0.0f;
+}
+// [ch13-transmittance]
+
+// [ch13-pass-through]
+// A transparent surface is there with probability opacity: otherwise the ray goes on through
+// it unchanged, neither scattered nor counted as a bounce (opacity 0 or 1 takes no random
+// number, so that a cut-out renders as the geometry without the cut-out part).
+bool PathTracer::passes_through(Path& path, const Hit& hit, Vec3f p, Vec3f ng) const {
+  const Material& material = scene_.materials[scene_.triangle_material[hit.prim]];
+  if (!material.transparent() || path.passes >= kMaxPassThrough) return false;
+  const float opacity = material.opacity_at(scene_.texcoords(hit.prim, hit.u, hit.v));
+  if (opacity >= 1.0f || (opacity > 0.0f && path.sampler.get_1d() < opacity)) return false;
+  ++path.passes;
+  path.ray.org = offset_ray_origin(p, dot(path.ray.dir, ng) > 0.0f ? ng : -ng);
+  path.ray.tfar = std::numeric_limits<float>::infinity();
+  return true;
+}
+// [ch13-pass-through]
 
 // [ch13-escaped]
 // A ray that leaves the scene sees the lights at infinity. Unless the ray came from the
@@ -146,10 +195,16 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
     }
   }
   // [ch13-emission]
+  // A surface that is only partly there may let the ray through (scenes with transparency).
+  if (transparency_ && passes_through(path, hit, p, ng)) [[unlikely]] {
+    batch.next.push_back(index);
+    return;
+  }
   if (path.depth >= options_.max_depth) return;
 
   // The shading frame: the interpolated normal where the scene has one, on the geometric
-  // normal's side; the texture coordinates, or the barycentrics without them.
+  // normal's side, tilted by the bump map if the material has one; the texture coordinates,
+  // or the barycentrics without them.
   Vec3f ns = ng;
   if (!scene_.normals.empty()) {
     const Vec3f n = scene_.normals[tri[0]] * b0 + scene_.normals[tri[1]] * hit.u +
@@ -162,6 +217,12 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   if (!scene_.uvs.empty())
     uv = scene_.uvs[tri[0]] * b0 + scene_.uvs[tri[1]] * hit.u + scene_.uvs[tri[2]] * hit.v;
   const Material& material = scene_.materials[scene_.triangle_material[hit.prim]];
+  if (material.bump) [[unlikely]] {
+    Vec3f dpdu, dpdv;
+    scene_.texture_tangents(hit.prim, {v[0], v[1], v[2]}, dpdu, dpdv);
+    ns = material.bumped_normal(ns, dpdu, dpdv, uv);
+    if (dot(ns, ng) < 0.0f) ns = -ns;
+  }
   const Bsdf bsdf = material.make_bsdf(Frame(ns), uv);
   const Vec3f ng_wo = dot(ng, wo) >= 0.0f ? ng : -ng;  // the geometric normal on wo's side
   const LightQuery query{p, bsdf.transmissive() ? Vec3f(0.0f) : ng_wo};
@@ -285,6 +346,13 @@ void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t c
         stats.kernel_seconds += timer.seconds();
         stats.rays += blocked.size();
         stats.shadow_rays += blocked.size();
+        // In a scene with transparency, what a blocked shadow ray still lets through.
+        if (transparency_) [[unlikely]]
+          for (size_t k = 0; k < blocked.size(); ++k)
+            if (blocked[k]) {
+              Path& path = paths[batch.shadow_path[k]];
+              path.radiance += path.pending * transmittance(batch.shadow_rays[k], stats);
+            }
         for (size_t k = 0; k < blocked.size(); ++k) {
           Path& path = paths[batch.shadow_path[k]];
           if (!blocked[k]) path.radiance += path.pending;
@@ -293,6 +361,9 @@ void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t c
       }
       live.swap(batch.next);
     }
+    // Natural vignetting (chapter 10) scales what each camera path brought back.
+    if (camera_.params().vignetting) [[unlikely]]
+      for (Path& path : paths) path.radiance *= camera_.vignetting(path.film);
     for (const Path& path : paths) fb.add_sample(path.x, path.y, path.radiance, path.filter_weight);
     stats.samples += n;
   }

@@ -52,6 +52,8 @@ class PathTracer {
   struct Batch;
   void shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch, uint32_t index) const;
   Color escaped(const Path& path, Vec3f dir) const;
+  bool passes_through(Path& path, const Hit& hit, Vec3f p, Vec3f ng) const;
+  float transmittance(Ray shadow, RenderStats& stats) const;
 
   const RenderScene& scene_;
   Tracer kernels_;  ///< the scene's structure and kernels (RayKernels::tracer)
@@ -61,6 +63,7 @@ class PathTracer {
   std::unique_ptr<Distribution1D> light_choice_;  // null when the scene has no light
   std::vector<const TriangleLight*> triangle_lights_;  // per light: itself if a triangle light
   std::vector<uint32_t> infinite_lights_;              // the lights that rays escaping can see
+  bool transparency_ = false;  // whether shadow rays may pass through surfaces
 };
 
 }  // namespace rtk

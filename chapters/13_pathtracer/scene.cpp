@@ -1,5 +1,6 @@
 #include "13_pathtracer/scene.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +43,40 @@ uint32_t RenderScene::add_triangle_light(std::shared_ptr<const TriangleLight> li
   triangle_light.push_back(static_cast<int32_t>(lights.size() - 1));
   return static_cast<uint32_t>(mesh.triangles.size() - 1);
 }
+
+bool RenderScene::has_transparency() const {
+  for (const Material& m : materials)
+    if (m.transparent()) return true;
+  return false;
+}
+
+std::array<Vec3f, 3> RenderScene::corners(uint32_t prim, float time) const {
+  const auto& tri = mesh.triangles[prim];
+  std::array<Vec3f, 3> c;
+  for (int k = 0; k < 3; ++k) {
+    c[k] = mesh.vertices[tri[k]];
+    if (has_motion()) c[k] = c[k] + (vertices_t1[tri[k]] - c[k]) * time;
+  }
+  return c;
+}
+
+// [ch13-tangents]
+void RenderScene::texture_tangents(uint32_t prim, const std::array<Vec3f, 3>& c, Vec3f& dpdu,
+                                   Vec3f& dpdv) const {
+  const Vec3f e1 = c[1] - c[0], e2 = c[2] - c[0];
+  dpdu = e1, dpdv = e2;  // without uvs, (u, v) are the barycentrics
+  if (uvs.empty()) return;
+  // The edges in texture space and in space are related by one linear map:
+  // e1 = du1 dpdu + dv1 dpdv, e2 = du2 dpdu + dv2 dpdv; solve it for dpdu and dpdv.
+  const auto& tri = mesh.triangles[prim];
+  const Vec2f d1 = uvs[tri[1]] - uvs[tri[0]], d2 = uvs[tri[2]] - uvs[tri[0]];
+  const float det = d1.x * d2.y - d1.y * d2.x;
+  if (!(std::fabs(det) > 1e-12f)) return;  // degenerate texture coordinates: the edges
+  const float r = 1.0f / det;
+  dpdu = (e1 * d2.y - e2 * d1.y) * r;
+  dpdv = (e2 * d1.x - e1 * d2.x) * r;
+}
+// [ch13-tangents]
 
 void RenderScene::validate() const {
   const size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();

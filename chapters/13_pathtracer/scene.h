@@ -52,6 +52,20 @@ struct RenderScene {
 
   /// Whether any vertex moves during the shutter interval.
   bool has_motion() const { return !vertices_t1.empty(); }
+  /// Whether any material lets light through (OBJ d < 1 or map_d).
+  bool has_transparency() const;
+  /// The corners of triangle `prim` at shutter time `time`.
+  std::array<Vec3f, 3> corners(uint32_t prim, float time) const;
+  /// The texture coordinates at barycentrics (u, v) of triangle `prim`: the interpolated
+  /// `uvs`, or (u, v) themselves when the scene has none.
+  Vec2f texcoords(uint32_t prim, float u, float v) const {
+    if (uvs.empty()) return {u, v};
+    const auto& tri = mesh.triangles[prim];
+    return uvs[tri[0]] * (1.0f - u - v) + uvs[tri[1]] * u + uvs[tri[2]] * v;
+  }
+  /// How the point of triangle `prim` (corners `c`) moves per unit of the texture
+  /// coordinates texcoords() gives: dp/du and dp/dv, the tangents a bump map tilts.
+  void texture_tangents(uint32_t prim, const std::array<Vec3f, 3>& c, Vec3f& dpdu, Vec3f& dpdv) const;
 
   /// Adds a material and returns its index.
   uint32_t add_material(Material material);

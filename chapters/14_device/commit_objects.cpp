@@ -219,6 +219,9 @@ std::shared_ptr<const Version> build_camera(const Object& o, const ParamReader& 
   const int handed = p.get_int("rightHanded", 0);
   if (handed != 0 && handed != 1) p.fail("rightHanded", "must be 0 (left-handed, Embree 1.1) or 1");
   c.right_handed = handed == 1;
+  const int vignetting = p.get_int("vignetting", 0);
+  if (vignetting != 0 && vignetting != 1) p.fail("vignetting", "must be 0 (none) or 1 (cos^4 falloff)");
+  c.vignetting = vignetting == 1;
   if (o.type == "thinlens") {
     c.lens_radius = p.get_float("radius", c.lens_radius);
     c.focal_distance = p.get_float("focalDistance", c.focal_distance);

@@ -94,16 +94,37 @@ std::map<std::string, uint32_t> read_mtl_text(std::string_view text,
     } else if (key == "illum") {
       if (args != 1) fail(where, "illum takes one whole number");
       params.set("illum", static_cast<float>(scene_io::parse_int(l.tokens[1], where, key, 0, 10)));
-    } else if (key == "map_Kd") {
-      if (args < 1) fail(where, "map_Kd takes a file name");
-      // Options (-s, -o, -bm ...) come before the file name, which is the last token.
-      if (args > 1 && warn)
-        warn(file + ":" + std::to_string(l.line) + ": map_Kd options are ignored");
+    } else if (key == "map_Kd" || key == "map_d" || key == "map_Bump" || key == "map_bump" ||
+               key == "bump") {
+      // [ch13-mtl-maps]
+      // A texture statement: options, then the file name, the last token. The colour map is
+      // read by the scene's conventions; the opacity and height maps hold data, not colours:
+      // always linear and interpolated (a height's slope needs the interpolation), with the
+      // scene's origin.
+      const bool colour = key == "map_Kd";
+      const std::string name = colour ? "map_Kd" : key == "map_d" ? "map_d" : "map_Bump";
+      if (args < 1) fail(where, name + " takes a file name");
+      size_t i = 1;
+      for (; i + 1 < l.tokens.size(); ++i) {
+        if (name == "map_Bump" && l.tokens[i] == "-bm" && i + 2 < l.tokens.size()) {
+          params.set("bump_scale", scene_io::parse_float(l.tokens[i + 1], where, "-bm", -1e6f, 1e6f));
+          ++i;
+        } else if (warn) {
+          warn(file + ":" + std::to_string(l.line) + ": " + name + " option '" +
+               scene_io::shown(l.tokens[i]) + "' is ignored");
+          break;
+        }
+      }
+      // [ch13-mtl-maps]
       const std::filesystem::path image = path.parent_path() / std::string(l.tokens.back());
+      TextureConventions data = conventions;
+      data.encoding = ColorEncoding::linear;
+      data.lookup = TextureLookup::bilinear;
       try {
-        params.set("map_Kd", std::shared_ptr<const Texture>(load_image_texture(image.string(), conventions)));
+        params.set(name, std::shared_ptr<const Texture>(
+                             load_image_texture(image.string(), colour ? conventions : data)));
       } catch (const std::exception& e) {
-        fail(where, std::string("map_Kd: ") + e.what());
+        fail(where, name + ": " + e.what());
       }
     } else if (warned.insert(std::string(key)).second && warn) {
       warn(file + ":" + std::to_string(l.line) + ": MTL key '" + scene_io::shown(key) +

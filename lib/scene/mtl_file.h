@@ -5,10 +5,12 @@
 /// (0 to 1e10: the guide's files give Ka 20, lamps need large Ke); `Ns` (0 to 1e6), `Ni` (0 to
 /// 10), `d` and `Tr` (0 to 1), `illum` (a whole number from 0 to 10); `map_Kd [options] FILE`
 /// (a texture, relative to the MTL file, read by the scene's TextureConventions: RTK's decode
-/// 8-bit files from sRGB, Embree 1.1's read them as linear). Every value is checked where it is read,
-/// so that an error names the MTL file and line; a material that chapter 11 refuses as a whole
-/// is reported at its `newmtl` line. Other keys (map_Ks, bump, ...) are warned about once per
-/// file and ignored.
+/// 8-bit files from sRGB, Embree 1.1's read them as linear); `map_d [options] FILE` (opacity)
+/// and `map_Bump` or `bump [-bm SCALE] [options] FILE` (heights), data maps read as linear
+/// values and interpolated; other texture options are ignored with a warning. Every value is
+/// checked where it is read, so that an error names the MTL file and line; a material that
+/// chapter 11 refuses as a whole is reported at its `newmtl` line. Other keys (map_Ks, ...)
+/// are warned about once per file and ignored.
 #pragma once
 
 #include <filesystem>

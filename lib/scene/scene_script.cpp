@@ -462,8 +462,8 @@ class ScriptReader {
         fail(t.where, "-reference: cannot open '" + path.string() + "'");
       s_.reference = path;
     } else if (name == "-vignetting") {
-      take(o, "a value");
-      warn(o.where, o.text + " is not modelled and is ignored");
+      // Embree 1.1's switch, read as the natural cos^4 falloff of a real camera (chapter 10).
+      cam.vignetting = integer(o, 0, 1) != 0;
     } else if (name == "-display") {
       warn(o.where, o.text + ": the viewer is opened by running rtk without -o");
     } else {
@@ -583,7 +583,7 @@ constexpr ScriptOptionHelp kScriptOptions[] = {
     {"-o", "FILE", "render the state set up so far to .png .tga .ppm .hdr .pfm .exr"},
     {"-time", "SECONDS", "rtk render: render progressively until the time is spent (instead of -spp)"},
     {"-reference", "IMAGE", "rtk render: print the relative RMS error against this converged .pfm .hdr .exr"},
-    {"-vignetting", "v", "read and ignored (not modelled)"},
+    {"-vignetting", "0|1", "natural vignetting: the image darkens as cos^4 of the angle to the view axis (default 0)"},
     {"-backplate", "FILE", "an image behind the scene, seen by camera rays that hit nothing"},
     {"-refine", "0|1", "the viewer refines progressively at start (1, the default) or not (0); its r key toggles it"},
     {"-display", "", "ignored: rtk without -o opens the viewer"},

@@ -14,7 +14,7 @@
 /// -distantlight d L halfAngle, -trianglelight P U V L, -quadlight P U V L, -hdrilight r g b
 /// FILE, -trisphere p r numTheta numPhi, -righthanded, -lefthanded, -o FILE (rendered with the
 /// state set up before it; ScriptOutput), -conventions, -backplate, and the viewer's -fullscreen
-/// and -refine; -vignetting is read and ignored with a warning. RTK's own -time SECONDS and
+/// and -refine; -vignetting 0|1 (the cos^4 falloff of chapter 10's camera). RTK's own -time SECONDS and
 /// -reference IMAGE are for `rtk render` (equal-time rendering and its error).
 /// script_option_help() lists them all. `#` starts a comment; files are named relative to the
 /// script that names them.

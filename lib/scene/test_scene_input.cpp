@@ -324,6 +324,9 @@ TEST_CASE("lib_scene: MTL values are checked for range at their line") {
       {"illum 2.5", "illum: '2.5' is not an integer"},
       {"Kd 1 1", "Kd takes 3 numbers"},
       {"map_Kd missing.png", "map_Kd: "},
+      {"map_d missing.png", "map_d: "},
+      {"map_Bump -bm nan h.pgm", "-bm: 'nan' is not a finite number"},
+      {"bump", "map_Bump takes a file name"},
   };
   for (const auto& [line, words] : cases) {
     INFO(line);
@@ -334,4 +337,35 @@ TEST_CASE("lib_scene: MTL values are checked for range at their line") {
   }
   CHECK(mtl_error(s, "newmtl m\nKd 0.8 0.8 0.8\nKa 20 20 20\nNs 96\nNi 0\nd 1\nillum 2\n")
             .what.empty());
+}
+
+TEST_CASE("lib_scene: MTL opacity and bump maps: d, Tr, map_d, map_Bump / bump with -bm") {
+  Scratch s;
+  // A two-texel grey image: 8-bit values that data maps read as they are (no sRGB curve).
+  s.write("h.pgm", std::string("P5\n2 1\n255\n") + std::string(1, '\0') + std::string(1, char(51)));
+  s.write("t.mtl",
+          "newmtl a\nKd 0.5\nd 0.25\nmap_d h.pgm\nmap_Bump -bm 0.5 h.pgm\n"
+          "newmtl b\nKd 0.5\nTr 0.25\nbump h.pgm\n");
+  rtk::RenderScene scene;
+  std::vector<std::string> warnings;
+  const auto names = rtk::load_mtl(s.dir / "t.mtl", scene, [&](const std::string& w) { warnings.push_back(w); });
+  for (const std::string& w : warnings) CHECK_MESSAGE(false, w);
+  const rtk::Material& a = scene.materials[names.at("a")];
+  CHECK(a.opacity == 0.25f);
+  REQUIRE(a.opacity_map);
+  CHECK(a.opacity_map->eval({0.75f, 0.5f}).r == doctest::Approx(0.2f));  // 51 / 255, linear
+  REQUIRE(a.bump);
+  CHECK(a.bump_scale == 0.5f);
+  const rtk::Material& b = scene.materials[names.at("b")];
+  CHECK(b.opacity == 0.75f);  // Tr is 1 - d
+  REQUIRE(b.bump);
+  CHECK(b.bump_scale == 1.0f);
+  // Another texture option is named in a warning, and the map is still read.
+  s.write("o.mtl", "newmtl c\nmap_d -clamp on h.pgm\n");
+  warnings.clear();
+  rtk::RenderScene other;
+  const auto c = rtk::load_mtl(s.dir / "o.mtl", other, [&](const std::string& w) { warnings.push_back(w); });
+  REQUIRE(warnings.size() == 1);
+  CHECK(has(warnings[0], "map_d option '-clamp' is ignored"));
+  CHECK(other.materials[c.at("c")].opacity_map);
 }

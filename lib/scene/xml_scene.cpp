@@ -440,8 +440,14 @@ class XmlReader {
         params.set(pname, Color(v[0], v[1], v[2]));
       } else if (kind == "texture") {
         const std::filesystem::path file = path_.parent_path() / quoted(p);
+        // Opacity and height maps hold data: linear and interpolated, whatever the colours' conventions.
+        TextureConventions c = conventions_;
+        if (pname == "map_d" || pname == "map_Bump") {
+          c.encoding = ColorEncoding::linear;
+          c.lookup = TextureLookup::bilinear;
+        }
         try {
-          params.set(pname, std::shared_ptr<const Texture>(load_image_texture(file.string(), conventions_)));
+          params.set(pname, std::shared_ptr<const Texture>(load_image_texture(file.string(), c)));
         } catch (const std::exception& e) {
           fail(p, "<texture name=\"" + pname + "\">: " + e.what());
         }

@@ -254,6 +254,22 @@ TEST_CASE("scene scripts: -righthanded and -lefthanded set the camera's handedne
   CHECK(box.scene.camera.right_handed);
 }
 
+TEST_CASE("scene scripts: -vignetting 0|1 switches the camera's natural vignetting, without a warning") {
+  const auto vignetting = [](std::vector<std::string_view> args) {
+    SceneScript s;
+    std::vector<std::string> warnings;
+    read_script_args(args, s, [&](const std::string& w) { warnings.push_back(w); });
+    CHECK(warnings.empty());
+    return s.scene.camera.vignetting;
+  };
+  CHECK_FALSE(vignetting({}));
+  CHECK(vignetting({"-vignetting", "1"}));
+  CHECK_FALSE(vignetting({"-vignetting", "1", "-vignetting", "0"}));
+  SceneScript s;
+  const std::vector<std::string_view> two = {"-vignetting", "2"};
+  CHECK_THROWS(read_script_args(two, s));
+}
+
 TEST_CASE("scene scripts: each -o keeps the state set up before it") {
   TempDir dir;
   const std::string a = (dir.path / "a.png").string(), b = (dir.path / "b.png").string(),
