@@ -36,6 +36,20 @@ inline bool is_transmissive(const BsdfModel& model) {
          std::holds_alternative<ThinDielectric>(model);
 }
 
+/// Whether a model's sample() reads its 1D lobe choice: the models with two lobes to choose
+/// between (a coat and a base, reflection and refraction). The others ignore it, and an
+/// integrator need not compute the number.
+inline bool reads_lobe_choice(const BsdfModel& model) {
+  return std::holds_alternative<Plastic>(model) || std::holds_alternative<SmoothDielectric>(model) ||
+         std::holds_alternative<ThinDielectric>(model);
+}
+
+/// Whether a model's sample() reads its 2D point: the models with a lobe that is not a delta.
+inline bool reads_direction_sample(const BsdfModel& model) {
+  return std::holds_alternative<Lambertian>(model) || std::holds_alternative<RoughConductor>(model) ||
+         std::holds_alternative<Plastic>(model) || std::holds_alternative<Velvet>(model);
+}
+
 // [ch11-bsdf]
 /// A BSDF in world space: a model and the shading frame it lives in. Directions passed in
 /// and out are world-space unit vectors pointing away from the surface.
