@@ -52,7 +52,9 @@ inline bool reads_direction_sample(const BsdfModel& model) {
 
 // [ch11-bsdf]
 /// A BSDF in world space: a model and the shading frame it lives in. Directions passed in
-/// and out are world-space unit vectors pointing away from the surface.
+/// and out are world-space unit vectors pointing away from the surface. The Lambertian model,
+/// the commonest in scenes, is called directly rather than through the variant's dispatch,
+/// which the compiler cannot inline.
 class Bsdf {
  public:
   /// A model placed in a frame whose n is the shading normal.
@@ -61,18 +63,22 @@ class Bsdf {
   /// f(wo, wi), without the cosine; zero for delta lobes.
   Color eval(Vec3f wo, Vec3f wi) const {
     const Vec3f lo = frame_.to_local(wo), li = frame_.to_local(wi);
+    if (const auto* l = std::get_if<Lambertian>(&model_)) return l->eval(lo, li);
     return std::visit([&](const auto& m) { return m.eval(lo, li); }, model_);
   }
   /// The solid-angle density with which sample() returns wi (non-delta lobes only).
   float pdf(Vec3f wo, Vec3f wi) const {
     const Vec3f lo = frame_.to_local(wo), li = frame_.to_local(wi);
+    if (const auto* l = std::get_if<Lambertian>(&model_)) return l->pdf(lo, li);
     return std::visit([&](const auto& m) { return m.pdf(lo, li); }, model_);
   }
   /// A sampled direction (world space) from a 1D lobe choice and a 2D sample.
   std::optional<BsdfSample> sample(Vec3f wo, float u_lobe, Vec2f u) const {
     const Vec3f lo = frame_.to_local(wo);
     std::optional<BsdfSample> s =
-        std::visit([&](const auto& m) { return m.sample(lo, u_lobe, u); }, model_);
+        std::holds_alternative<Lambertian>(model_)
+            ? std::get<Lambertian>(model_).sample(lo, u_lobe, u)
+            : std::visit([&](const auto& m) { return m.sample(lo, u_lobe, u); }, model_);
     if (s) s->wi = frame_.to_world(s->wi);
     return s;
   }
