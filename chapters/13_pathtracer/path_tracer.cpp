@@ -112,7 +112,9 @@ Color PathTracer::escaped(const Path& path, Vec3f dir) const {
 
 void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
                        uint32_t index) const {
-  const Vec3f dir = normalize(ray.dir);
+  // Every ray of the path is born with a unit direction (the camera's, or a BSDF sample's
+  // turned into world space), so it is not normalised again here.
+  const Vec3f dir = ray.dir;
   if (!hit.found()) {
     // [ch13-backplate]
     // A camera ray that meets nothing sees the backplate, where there is one, at its film
@@ -217,13 +219,14 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
         const float light_pdf = pmf * ls->pdf;
         const float weight = ls->delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, ls->wi));
         path.pending = path.throughput * f * ls->L * (weight / light_pdf);
-        Ray shadow;
+        // Written where the batch keeps it: a ray assembled on the stack and then copied was
+        // stored in pieces and read back whole, which the processor cannot forward.
+        Ray& shadow = batch.shadow_rays.emplace_back();
         shadow.org = offset_ray_origin(p, dot(ls->wi, ng) > 0.0f ? ng : -ng);
         shadow.dir = ls->wi;
         shadow.time = ray.time;
         shadow.tfar = std::isfinite(ls->distance) ? ls->distance * kShadowShortening
                                                   : std::numeric_limits<float>::infinity();
-        batch.shadow_rays.push_back(shadow);
         batch.shadow_path.push_back(index);
       }
     }
