@@ -67,17 +67,6 @@ std::vector<std::string> ParameterList::unused() const {
 
 // Materials ----------------------------------------------------------------------------------
 
-Bsdf Material::make_bsdf(const Frame& frame, Vec2f uv) const {
-  BsdfModel model = prototype;
-  if (albedo) {
-    const Color c = albedo->eval(uv);
-    if (auto* l = std::get_if<Lambertian>(&model)) l->reflectance = c;
-    if (auto* p = std::get_if<Plastic>(&model)) p->pigment = c;
-    if (auto* v = std::get_if<Velvet>(&model)) v->reflectance = c;
-  }
-  return Bsdf(frame, model);
-}
-
 namespace {
 
 std::string lower(std::string_view s) {

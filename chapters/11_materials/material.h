@@ -65,8 +65,17 @@ struct Material {
   std::shared_ptr<const Texture> albedo;  ///< the diffuse colour's texture, or null
   Color emission;                         ///< emitted radiance (OBJ Ke, or "emission")
 
-  /// The BSDF at a point with shading frame `frame` and texture coordinates `uv`.
-  Bsdf make_bsdf(const Frame& frame, Vec2f uv) const;
+  /// The BSDF at a point with shading frame `frame` and texture coordinates `uv`. Inline: the
+  /// path tracer makes one at every hit, and most materials have no texture.
+  Bsdf make_bsdf(const Frame& frame, Vec2f uv) const {
+    if (!albedo) return Bsdf(frame, prototype);
+    BsdfModel model = prototype;
+    const Color c = albedo->eval(uv);
+    if (auto* l = std::get_if<Lambertian>(&model)) l->reflectance = c;
+    if (auto* p = std::get_if<Plastic>(&model)) p->pigment = c;
+    if (auto* v = std::get_if<Velvet>(&model)) v->reflectance = c;
+    return Bsdf(frame, model);
+  }
   /// Whether the surface emits light.
   bool is_emissive() const { return !is_black(emission); }
 };
