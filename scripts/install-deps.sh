@@ -3,7 +3,8 @@
 set -euo pipefail
 packages=(cmake g++ make doctest-dev libstb-dev libglfw3-dev libbenchmark-dev libtbb-dev
           libpugixml-dev libpng-dev libjpeg-dev libopenexr-dev doxygen graphviz gnuplot-nox xvfb xauth clang libclang-rt-14-dev
-          libembree-dev embree-tools libgl1-mesa-dri python3 libjs-mathjax doxygen-awesome-css chromium)
+          libembree-dev embree-tools libgl1-mesa-dri python3 libjs-mathjax doxygen-awesome-css chromium
+          valgrind)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -305,6 +305,30 @@ section_ch13_equal_time() { # path tracer against Embree 3's pathtracer: samples
   plot chapters/13_pathtracer/figure/equal_time.gp chapters/13_pathtracer/ch13_equal_time
 }
 
+section_ch13_path_loop() { # path tracer: its path loop before and after issue 18's clean-up, against Embree 3's pathtracer
+  build rtk
+  command -v pathtracer >/dev/null || { echo "  (no pathtracer: install embree-tools)"; return 0; }
+  # The code before: RTK_BEFORE names an rtk built from commit 8bfce20, or it is built here
+  # from that commit's files (git archive), in a build folder of its own.
+  local before=${RTK_BEFORE:-}
+  if [ -z "$before" ]; then
+    local src=$OUT/path_loop_before
+    if [ ! -x "$src/build/apps/rtk" ]; then
+      rm -rf "$src" && mkdir -p "$src"
+      git archive 8bfce20 | tar -x -C "$src"
+      cmake -S "$src" -B "$src/build" -DCMAKE_BUILD_TYPE=Release -DRTK_BUILD_TESTS=OFF \
+        -DRTK_BUILD_BENCH=OFF -DRTK_BUILD_BOOK=OFF >/dev/null
+      nice -n 10 cmake --build "$src/build" -j"${JOBS:-$(nproc)}" --target rtk >/dev/null
+    fi
+    before=$src/build/apps/rtk
+  fi
+  local buddha=""
+  have_scenes && buddha=$SCENES/happy_buddha_100k/buddha.obj
+  table ch13_path_loop chapters/13_pathtracer/ch13_path_loop.md \
+    python3 chapters/13_pathtracer/figure/path_loop.py "$before" "$B/apps/rtk" "$OUT/ch13_path_loop" $buddha
+  cat chapters/13_pathtracer/ch13_path_loop.md
+}
+
 section_ch14() { # device: a frame through the device against the renderer directly, and a commit
   build ch14_bench
   gbench ch14 "$B/chapters/14_device/ch14_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
@@ -342,7 +366,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch10 ch11 ch12 ch13 ch14 ch15 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch11_gallery
-       ch13_convergence ch13_equal_time)
+       ch13_convergence ch13_equal_time ch13_path_loop)
 
 # --- the machine ------------------------------------------------------------------------------
 

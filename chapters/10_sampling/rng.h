@@ -68,6 +68,9 @@ class Pcg32 {
   /// A uniform float in [0, 1).
   constexpr float next_float() { return to_unit_float(next_u32()); }
 
+  /// Steps past the next 32 bits without computing them: one step of the state alone.
+  constexpr void skip() { state_ = state_ * 0x5851f42d4c957f2dull + inc_; }
+
  private:
   uint64_t state_ = 0;
   uint64_t inc_ = 1;

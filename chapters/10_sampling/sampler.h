@@ -55,6 +55,26 @@ class Sampler {
     const std::array<uint32_t, 2> p = sobol_owen(reversed_index_, next_seeds());
     return {to_unit_float(p[0]), to_unit_float(p[1])};
   }
+  /// Steps past the next 1D number without computing it: what follows is what get_1d()
+  /// would have left. A renderer that knows it will not use a number (a pinhole camera's lens
+  /// position, a point light's sample) skips it, so that dimension d still means the same
+  /// thing in every path, at the cost of a counter rather than of the hashes.
+  void skip_1d() {
+    if (type_ == SamplerType::independent)
+      rng_.skip();
+    else
+      ++dimension_;
+  }
+  /// Steps past the next 2D point without computing it (see skip_1d).
+  void skip_2d() {
+    if (type_ == SamplerType::independent) {
+      rng_.skip();
+      rng_.skip();
+    } else {
+      ++dimension_;
+    }
+  }
+
   /// The film position within the pixel: by convention the first 2D point of a pixel sample.
   Vec2f get_pixel_2d() { return get_2d(); }
 

@@ -195,6 +195,32 @@ TEST_CASE("ch10: a pixel's samples do not depend on the order pixels are visited
   }
 }
 
+TEST_CASE("ch10: a skipped number leaves the numbers after it as they were") {
+  // The renderer skips numbers it will not use; every later number must be the one it would
+  // have drawn, bit for bit, for both samplers and for 1D numbers and 2D points.
+  for (SamplerType type : {SamplerType::independent, SamplerType::sobol}) {
+    Sampler drawn(type, 3), skipping(type, 3);
+    bool same = true;
+    for (uint32_t i = 0; i < 8; ++i) {
+      drawn.start_pixel_sample(5, 7, i);
+      skipping.start_pixel_sample(5, 7, i);
+      for (int d = 0; d < 12; ++d) {
+        if (d % 3 == 0) {
+          drawn.get_1d();
+          skipping.skip_1d();
+        } else if (d % 3 == 1) {
+          drawn.get_2d();
+          skipping.skip_2d();
+        } else {
+          const Vec2f a = drawn.get_2d(), b = skipping.get_2d();
+          same = same && a.x == b.x && a.y == b.y && drawn.get_1d() == skipping.get_1d();
+        }
+      }
+    }
+    CHECK(same);
+  }
+}
+
 TEST_CASE("ch10: Sobol dimensions and pixels are decorrelated by their scrambles") {
   // Padding with independent scrambles must leave no correlation between dimensions; the
   // same sample of two pixels must differ.

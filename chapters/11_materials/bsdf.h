@@ -52,9 +52,25 @@ inline bool is_transmissive(const BsdfModel& model) {
          std::holds_alternative<ThinDielectric>(model);
 }
 
+/// Whether a model's sample() reads its 1D lobe choice: the models with two lobes to choose
+/// between (a coat and a base, reflection and refraction). The others ignore it, and an
+/// integrator need not compute the number.
+inline bool reads_lobe_choice(const BsdfModel& model) {
+  return std::holds_alternative<Plastic>(model) || std::holds_alternative<SmoothDielectric>(model) ||
+         std::holds_alternative<ThinDielectric>(model) || std::holds_alternative<MetallicPaint>(model);
+}
+
+/// Whether a model's sample() reads its 2D point: the models with a lobe that is not a delta.
+inline bool reads_direction_sample(const BsdfModel& model) {
+  return std::holds_alternative<Lambertian>(model) || std::holds_alternative<RoughConductor>(model) ||
+         std::holds_alternative<Plastic>(model) || std::holds_alternative<Velvet>(model) ||
+         std::holds_alternative<MetallicPaint>(model);
+}
+
 // [ch11-bsdf]
 /// A BSDF in world space: a model and the shading frame it lives in. Directions passed in
-/// and out are world-space unit vectors pointing away from the surface.
+/// and out are world-space unit vectors pointing away from the surface. Every query goes
+/// through dispatch_model, which the compiler inlines, rather than std::visit, which it does not.
 class Bsdf {
  public:
   /// A model placed in a frame whose n is the shading normal.
@@ -74,7 +90,7 @@ class Bsdf {
   std::optional<BsdfSample> sample(Vec3f wo, float u_lobe, Vec2f u) const {
     const Vec3f lo = frame_.to_local(wo);
     std::optional<BsdfSample> s =
-        std::visit([&](const auto& m) { return m.sample(lo, u_lobe, u); }, model_);
+        dispatch_model(model_, [&](const auto& m) { return m.sample(lo, u_lobe, u); });
     if (s) s->wi = frame_.to_world(s->wi);
     return s;
   }

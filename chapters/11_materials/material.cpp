@@ -67,18 +67,6 @@ std::vector<std::string> ParameterList::unused() const {
 
 // Materials ----------------------------------------------------------------------------------
 
-Bsdf Material::make_bsdf(const Frame& frame, Vec2f uv) const {
-  BsdfModel model = prototype;
-  if (albedo) {
-    const Color c = albedo->eval(uv);
-    if (auto* l = std::get_if<Lambertian>(&model)) l->reflectance = c;
-    if (auto* p = std::get_if<Plastic>(&model)) p->pigment = c;
-    if (auto* v = std::get_if<Velvet>(&model)) v->reflectance = c;
-    if (auto* q = std::get_if<MetallicPaint>(&model)) q->shade = c;
-  }
-  return Bsdf(frame, model);
-}
-
 float Material::opacity_at(Vec2f uv) const {
   if (!opacity_map) return opacity;
   return std::clamp(opacity * average(opacity_map->eval(uv)), 0.0f, 1.0f);

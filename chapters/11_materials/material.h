@@ -69,8 +69,18 @@ struct Material {
   std::shared_ptr<const Texture> bump;         ///< OBJ map_Bump: a height field, or null
   float bump_scale = 1.0f;                     ///< OBJ -bm: heights are scale * texture value
 
-  /// The BSDF at a point with shading frame `frame` and texture coordinates `uv`.
-  Bsdf make_bsdf(const Frame& frame, Vec2f uv) const;
+  /// The BSDF at a point with shading frame `frame` and texture coordinates `uv`. Inline: the
+  /// path tracer makes one at every hit, and most materials have no texture.
+  Bsdf make_bsdf(const Frame& frame, Vec2f uv) const {
+    if (!albedo) return Bsdf(frame, prototype);
+    BsdfModel model = prototype;
+    const Color c = albedo->eval(uv);
+    if (auto* l = std::get_if<Lambertian>(&model)) l->reflectance = c;
+    if (auto* p = std::get_if<Plastic>(&model)) p->pigment = c;
+    if (auto* v = std::get_if<Velvet>(&model)) v->reflectance = c;
+    if (auto* q = std::get_if<MetallicPaint>(&model)) q->shade = c;
+    return Bsdf(frame, model);
+  }
   /// Whether the surface emits light.
   bool is_emissive() const { return !is_black(emission); }
   /// Whether light may pass through the surface without meeting it (d < 1 or a map_d).

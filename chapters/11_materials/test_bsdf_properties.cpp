@@ -289,3 +289,26 @@ TEST_CASE("ch11: MetallicPaint: no glitter is the smooth Plastic; the flakes add
     CHECK(close(paint.eval(wo, off), want, 1e-4f));
   }
 }
+
+TEST_CASE("ch11: a model ignores the random numbers it says it does not read") {
+  // The path tracer skips the numbers a model does not read (reads_lobe_choice,
+  // reads_direction_sample); changing them must then change no sample.
+  Pcg32 rng(11);
+  for (const auto& [name, model] : all_models()) {
+    INFO(name);
+    const Bsdf bsdf(Frame(), model);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3f wo = random_direction(rng);
+      const float u_lobe = rng.next_float();
+      const Vec2f u{rng.next_float(), rng.next_float()};
+      const float other_lobe = reads_lobe_choice(model) ? u_lobe : rng.next_float();
+      const Vec2f other_u = reads_direction_sample(model) ? u : Vec2f{rng.next_float(), rng.next_float()};
+      const auto a = bsdf.sample(wo, u_lobe, u), b = bsdf.sample(wo, other_lobe, other_u);
+      REQUIRE(a.has_value() == b.has_value());
+      if (!a) continue;
+      CHECK(a->wi == b->wi);
+      CHECK(a->weight == b->weight);
+      CHECK(a->pdf == b->pdf);
+    }
+  }
+}

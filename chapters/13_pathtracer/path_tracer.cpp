@@ -73,9 +73,24 @@ PathTracer::PathTracer(const RenderScene& scene, const RayKernels& kernels,
     const float p = luminance(light.power(radius));
     power.push_back(std::isfinite(p) && p > 0.0f ? p : 0.0f);
     triangle_lights_.push_back(dynamic_cast<const TriangleLight*>(&light));
+    light_is_delta_.push_back(light.is_delta());
     if (light.is_infinite()) infinite_lights_.push_back(static_cast<uint32_t>(i));
   }
   if (!power.empty()) light_choice_ = std::make_unique<Distribution1D>(power);
+  // What every hit would otherwise ask again: a material's kind, and, in a scene that does not
+  // move, each triangle's unit normal (by the formula a hit would use, so bit for bit the same).
+  for (const Material& m : scene.materials)
+    material_traits_.push_back({is_delta_only(m.prototype), is_transmissive(m.prototype),
+                                reads_lobe_choice(m.prototype), reads_direction_sample(m.prototype)});
+  if (!scene.has_motion()) {
+    face_normals_.reserve(scene.mesh.triangles.size());
+    for (const auto& tri : scene.mesh.triangles) {
+      const Vec3f v0 = scene.mesh.vertices[tri[0]], v1 = scene.mesh.vertices[tri[1]],
+                  v2 = scene.mesh.vertices[tri[2]];
+      face_normals_.push_back(normalize(cross(v1 - v0, v2 - v0)));
+    }
+  }
+  uses_lens_ = camera_.params().lens_radius > 0.0f;
   transparency_ = scene.has_transparency();
 }
 
@@ -146,7 +161,9 @@ Color PathTracer::escaped(const Path& path, Vec3f dir) const {
 
 void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
                        uint32_t index) const {
-  const Vec3f dir = normalize(ray.dir);
+  // Every ray of the path is born with a unit direction (the camera's, or a BSDF sample's
+  // turned into world space), so it is not normalised again here.
+  const Vec3f dir = ray.dir;
   if (!hit.found()) {
     // [ch13-backplate]
     // A camera ray that meets nothing sees the backplate, where there is one, at its film
@@ -156,19 +173,23 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
       return;
     }
     // [ch13-backplate]
-    path.radiance += path.throughput * escaped(path, dir);
+    if (!infinite_lights_.empty()) path.radiance += path.throughput * escaped(path, dir);
     return;
   }
   // The hit point: from the barycentrics (more accurate than org + t dir), at the ray's time.
+  // A scene that does not move has its triangles' normals ready.
   const auto& tri = scene_.mesh.triangles[hit.prim];
   Vec3f v[3];
-  for (int k = 0; k < 3; ++k) {
-    v[k] = scene_.mesh.vertices[tri[k]];
-    if (scene_.has_motion()) v[k] = v[k] + (scene_.vertices_t1[tri[k]] - v[k]) * ray.time;
+  for (int k = 0; k < 3; ++k) v[k] = scene_.mesh.vertices[tri[k]];
+  Vec3f ng;
+  if (scene_.has_motion()) {
+    for (int k = 0; k < 3; ++k) v[k] = v[k] + (scene_.vertices_t1[tri[k]] - v[k]) * ray.time;
+    ng = normalize(cross(v[1] - v[0], v[2] - v[0]));
+  } else {
+    ng = face_normals_[hit.prim];
   }
   const float b0 = 1.0f - hit.u - hit.v;
   const Vec3f p = v[0] * b0 + v[1] * hit.u + v[2] * hit.v;
-  const Vec3f ng = normalize(cross(v[1] - v[0], v[2] - v[0]));
   const Vec3f wo = -dir;
   if (options_.eye_light) {
     // [ch13-debug]
@@ -216,7 +237,9 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   Vec2f uv{hit.u, hit.v};
   if (!scene_.uvs.empty())
     uv = scene_.uvs[tri[0]] * b0 + scene_.uvs[tri[1]] * hit.u + scene_.uvs[tri[2]] * hit.v;
-  const Material& material = scene_.materials[scene_.triangle_material[hit.prim]];
+  const uint32_t material_index = scene_.triangle_material[hit.prim];
+  const MaterialTraits traits = material_traits_[material_index];
+  const Material& material = scene_.materials[material_index];
   if (material.bump) [[unlikely]] {
     Vec3f dpdu, dpdv;
     scene_.texture_tangents(hit.prim, {v[0], v[1], v[2]}, dpdu, dpdv);
@@ -225,38 +248,47 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   }
   const Bsdf bsdf = material.make_bsdf(Frame(ns), uv);
   const Vec3f ng_wo = dot(ng, wo) >= 0.0f ? ng : -ng;  // the geometric normal on wo's side
-  const LightQuery query{p, bsdf.transmissive() ? Vec3f(0.0f) : ng_wo};
-
-  // The random numbers of one bounce are always drawn, in this order, whether used or not,
-  // so that dimension d means the same thing in every path (Sobol stratification needs it).
-  const float u_light = path.sampler.get_1d();
-  const Vec2f u_light2 = path.sampler.get_2d();
-  const float u_lobe = path.sampler.get_1d();
-  const Vec2f u_bsdf = path.sampler.get_2d();
-  const float u_rr = path.sampler.get_1d();
+  const LightQuery query{p, traits.transmissive ? Vec3f(0.0f) : ng_wo};
+  Sampler& sampler = path.sampler;
 
   // [ch13-nee]
   // Next-event estimation: one light chosen by power, one point or direction on it, one
   // shadow ray. Its weight against BSDF sampling is the power heuristic; delta lights take
   // no part in MIS since BSDF sampling cannot find them.
-  if (light_choice_ && !bsdf.delta_only()) {
-    float pmf = 0.0f;
-    const int li = light_choice_->sample_discrete(u_light, &pmf);
-    const std::optional<LightSample> ls = scene_.lights[li]->sample_li(query, u_light2);
-    const bool same_side = bsdf.transmissive() || dot(ls ? ls->wi : wo, ng_wo) > 0.0f;
+  // Each bounce takes five dimensions of the sampler, always in this order (light choice,
+  // point on the light, lobe choice, direction, roulette), so that dimension d means the same
+  // thing in every path, as Sobol stratification needs. A number the bounce will not use (the
+  // choice among one light, a point light's point, a Lambertian surface's lobe) is skipped:
+  // counted, not computed.
+  const bool nee = light_choice_ && !traits.delta_only;
+  float pmf = 1.0f;
+  int light_index = 0;
+  if (nee && light_choice_->size() > 1)
+    light_index = light_choice_->sample_discrete(sampler.get_1d(), &pmf);
+  else
+    sampler.skip_1d();  // no choice to make: the light is light 0, with probability 1
+  Vec2f u_light{};
+  if (nee && !light_is_delta_[light_index])
+    u_light = sampler.get_2d();
+  else
+    sampler.skip_2d();  // a delta light is reached by one direction only
+  if (nee) {
+    const std::optional<LightSample> ls = scene_.lights[light_index]->sample_li(query, u_light);
+    const bool same_side = traits.transmissive || dot(ls ? ls->wi : wo, ng_wo) > 0.0f;
     if (ls && ls->pdf > 0.0f && pmf > 0.0f && !is_black(ls->L) && same_side) {
       const Color f = bsdf.eval(wo, ls->wi) * std::fabs(dot(ls->wi, ns));
       if (!is_black(f)) {
         const float light_pdf = pmf * ls->pdf;
         const float weight = ls->delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, ls->wi));
         path.pending = path.throughput * f * ls->L * (weight / light_pdf);
-        Ray shadow;
+        // Written where the batch keeps it: a ray assembled on the stack and then copied was
+        // stored in pieces and read back whole, which the processor cannot forward.
+        Ray& shadow = batch.shadow_rays.emplace_back();
         shadow.org = offset_ray_origin(p, dot(ls->wi, ng) > 0.0f ? ng : -ng);
         shadow.dir = ls->wi;
         shadow.time = ray.time;
         shadow.tfar = std::isfinite(ls->distance) ? ls->distance * kShadowShortening
                                                   : std::numeric_limits<float>::infinity();
-        batch.shadow_rays.push_back(shadow);
         batch.shadow_path.push_back(index);
       }
     }
@@ -266,9 +298,19 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   // [ch13-bounce]
   // BSDF sampling continues the path. A direction on the other side of the geometric
   // surface than a shading normal suggested would leak light through an opaque surface.
+  float u_lobe = 0.0f;
+  Vec2f u_bsdf{};
+  if (traits.reads_lobe)
+    u_lobe = sampler.get_1d();
+  else
+    sampler.skip_1d();
+  if (traits.reads_direction)
+    u_bsdf = sampler.get_2d();
+  else
+    sampler.skip_2d();
   const std::optional<BsdfSample> bs = bsdf.sample(wo, u_lobe, u_bsdf);
   if (!bs || is_black(bs->weight) || !is_finite(bs->weight)) return;
-  if (!bsdf.transmissive() && dot(bs->wi, ng_wo) <= 0.0f) return;
+  if (!traits.transmissive && dot(bs->wi, ng_wo) <= 0.0f) return;
   path.throughput *= bs->weight;
   // Embree 1.1's minContribution: a path that can add little any more ends (biased).
   if (max_component(path.throughput) < options_.min_contribution) return;
@@ -279,11 +321,14 @@ void PathTracer::shade(Path& path, const Ray& ray, const Hit& hit, Batch& batch,
   ++path.depth;
 
   // Russian roulette: after rr_depth bounces a path survives with a probability that follows
-  // its throughput, and a survivor's weight grows to keep the estimate unbiased.
+  // its throughput, and a survivor's weight grows to keep the estimate unbiased. Its number
+  // is the bounce's last.
   if (path.depth >= options_.rr_depth) {
     const float survive = std::min(0.95f, max_component(path.throughput));
-    if (!(u_rr < survive)) return;
+    if (!(sampler.get_1d() < survive)) return;
     path.throughput *= 1.0f / survive;
+  } else {
+    sampler.skip_1d();
   }
   path.ray = Ray{};
   path.ray.org = offset_ray_origin(p, dot(bs->wi, ng) > 0.0f ? ng : -ng);
@@ -319,8 +364,18 @@ void PathTracer::render_tile(const Tile& tile, uint32_t first_sample, uint32_t c
       const FilterSample fs = filter_.sample(path.sampler.get_pixel_2d());
       const Vec2f film{(path.x + 0.5f + fs.offset.x) / options_.width,
                        (path.y + 0.5f + fs.offset.y) / options_.height};
-      const Vec2f lens = path.sampler.get_2d();
-      const float time = path.sampler.get_1d();
+      // A pinhole camera needs no lens position, a scene that stands still no time: their
+      // dimensions are skipped (see shade).
+      Vec2f lens{};
+      if (uses_lens_)
+        lens = path.sampler.get_2d();
+      else
+        path.sampler.skip_2d();
+      float time = 0.0f;
+      if (scene_.has_motion())
+        time = path.sampler.get_1d();
+      else
+        path.sampler.skip_1d();
       path.filter_weight = fs.weight;
       path.film = film;
       path.ray = camera_.generate_ray(film, lens, time);

@@ -62,7 +62,15 @@ class PathTracer {
   PixelFilter filter_;
   std::unique_ptr<Distribution1D> light_choice_;  // null when the scene has no light
   std::vector<const TriangleLight*> triangle_lights_;  // per light: itself if a triangle light
+  std::vector<uint8_t> light_is_delta_;                // per light: whether it is a delta light
   std::vector<uint32_t> infinite_lights_;              // the lights that rays escaping can see
+  /// What the path loop asks of a material at every hit, found once per material.
+  struct MaterialTraits {
+    bool delta_only = false, transmissive = false, reads_lobe = true, reads_direction = true;
+  };
+  std::vector<MaterialTraits> material_traits_;
+  std::vector<Vec3f> face_normals_;  // per triangle: the unit geometric normal (static scenes)
+  bool uses_lens_ = false;           // whether camera rays need a lens sample (a thin lens)
   bool transparency_ = false;  // whether shadow rays may pass through surfaces
 };
 
