@@ -3,7 +3,7 @@
 #include <string>
 
 #include "01_base/cpu_features.h"
-#include "09_kernel_api/accel.h"
+#include "10_kernel_api/accel.h"
 #include "commands.h"
 #include "options.h"
 #include "render_kernels/choose_kernels.h"

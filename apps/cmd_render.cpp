@@ -1,6 +1,6 @@
 // `rtk render`: reads the guide's options (command scripts with -c, then the command line
-// itself, left to right), hands the scene to chapter 14's device, which builds the kernels the
-// scene needs, renders a frame with chapter 13's path tracer and writes every -o image. Also
+// itself, left to right), hands the scene to chapter 15's device, which builds the kernels the
+// scene needs, renders a frame with chapter 14's path tracer and writes every -o image. Also
 // the guide's short form `rtk -c scene.ecs -o out.png`.
 #include <algorithm>
 #include <atomic>
@@ -8,7 +8,7 @@
 #include <string>
 #include <thread>
 
-#include "14_device/device.h"
+#include "15_device/device.h"
 #include "commands.h"
 #include "device_objects.h"
 #include "image/image_error.h"
@@ -25,7 +25,7 @@ namespace rtk::cli {
 namespace {
 int render_output(SceneScript& script, std::span<const ScriptOutput> outputs, const Image& reference);
 
-// [ch13-time]
+// [ch14-time]
 // -time: progressive passes until the time is spent. The first pass is one sample per pixel;
 // each later pass takes as many samples as the time per sample so far says will fit in what is
 // left, but at most as many as were done (so that a wrong first estimate is corrected before
@@ -54,7 +54,7 @@ RenderStats render_for(Device& device, const Handle& renderer, const Handle& cam
   options.spp = static_cast<int>(done);
   return total;
 }
-// [ch13-time]
+// [ch14-time]
 
 }  // namespace
 
@@ -62,10 +62,10 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   // Step 1: the scene and options, scripts and command line read left to right.
   SceneScript script;
   script.options.progress = true;
-  ViewerOptions viewer;  // -frames, -screenshot: the viewer's own (chapter 15)
+  ViewerOptions viewer;  // -frames, -screenshot: the viewer's own (chapter 16)
   const std::vector<std::string_view> script_args = take_viewer_options(args, viewer);
   read_script_args(script_args, script, [](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); });
-  // No -o: the guide's interactive mode, the viewer (chapter 15), for `rtk -c` and `rtk view`.
+  // No -o: the guide's interactive mode, the viewer (chapter 16), for `rtk -c` and `rtk view`.
   if (script.output_states.empty() && viewer_without_output) {
     if (script.time_limit > 0 || !script.reference.empty())
       throw UsageError("-time and -reference are for rendering to a file (-o), not the viewer");
@@ -143,7 +143,7 @@ int render_output(SceneScript& script, std::span<const ScriptOutput> outputs, co
     std::fprintf(stderr, "rtk render: warning: the scene has no light; the image will be black "
                          "(add one, e.g. -ambientlight 1 1 1, or use -renderer debug)\n");
 
-  // Step 2: the device (chapter 14), whose scenes are traced by the kernels -kernels names,
+  // Step 2: the device (chapter 15), whose scenes are traced by the kernels -kernels names,
   // and the script's scene imported into it: the commit builds what the scene needs (RTK's
   // motion structure only if it moves).
   Device device([](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); },
@@ -165,7 +165,7 @@ int render_output(SceneScript& script, std::span<const ScriptOutput> outputs, co
                      [&] { return commit_camera(device, at.camera); });
   const Handle renderer = commit_renderer(device, options);
   const Handle framebuffer = commit_framebuffer(device, options.width, options.height);
-  // SIGINT or SIGTERM from here on stops the render at the next tile (chapter 13), and what
+  // SIGINT or SIGTERM from here on stops the render at the next tile (chapter 14), and what
   // was rendered is written.
   const Interrupt interrupt;
   const RenderStats stats =

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "01_base/timer.h"
-#include "09_kernel_api/accel.h"
-#include "09_kernel_api/motion_accel.h"
+#include "10_kernel_api/accel.h"
+#include "10_kernel_api/motion_accel.h"
 #include "commands.h"
 #include "io/obj_loader.h"
 #include "io/replay_files.h"

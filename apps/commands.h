@@ -27,9 +27,9 @@ int run_rays(std::span<const std::string_view> args);
 int run_trace(std::span<const std::string_view> args);
 /// `rtk compare A B [-rays R.rays] [-tolerance T] [-allow P] [-show N]`.
 int run_compare(std::span<const std::string_view> args);
-/// `rtk render [-c SCENE.ecs] [guide options...] -o IMAGE`: the path tracer (chapter 13).
+/// `rtk render [-c SCENE.ecs] [guide options...] -o IMAGE`: the path tracer (chapter 14).
 /// With `viewer_without_output` (`rtk view`, and the guide's short form `rtk -c SCENE.ecs`),
-/// no -o opens the interactive viewer (chapter 15) instead of being an error.
+/// no -o opens the interactive viewer (chapter 16) instead of being an error.
 int run_render(std::span<const std::string_view> args, bool viewer_without_output = false);
 /// `rtk render -help` (also `rtk view -help`, `rtk -c SCENE.ecs -help`): every option of the
 /// scripts and of the command line, one line each, and the viewer's own.

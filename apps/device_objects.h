@@ -1,11 +1,11 @@
 /// \file
-/// What a scene script says, as objects of chapter 14's device: `rtk render` and the viewer
+/// What a scene script says, as objects of chapter 15's device: `rtk render` and the viewer
 /// read the script with lib/scene, hand its scene to the device with import_scene, and make
 /// the camera, the renderer and the framebuffer from its settings through handles. Frames are
 /// then rendered by the device, from committed versions only.
 #pragma once
 
-#include "14_device/device.h"
+#include "15_device/device.h"
 #include "scene/scene_script.h"
 
 namespace rtk::cli {

@@ -1,6 +1,6 @@
 /// \file
 /// Ctrl-C and `kill` during a render: the work done so far is kept. While an Interrupt lives,
-/// the first SIGINT or SIGTERM sets a flag that chapter 13's renderer reads before each tile
+/// the first SIGINT or SIGTERM sets a flag that chapter 14's renderer reads before each tile
 /// (RenderOptions::stop) and that the viewer's loop reads every frame; the command then writes
 /// what was rendered, says so on stderr and exits with 128 + the signal's number (130 for
 /// SIGINT, 143 for SIGTERM), as a shell reports a program that a signal ended. A second signal

@@ -1,6 +1,6 @@
 // The interactive viewer: a GLFW window, the renderer's framebuffer as an OpenGL texture, and
-// the guide's controls (section 2.3) mapped onto chapter 15's OrbitCamera. One thread drives
-// the window; each frame it asks chapter 14's device (chapter 13's renderer, whose tiles run on
+// the guide's controls (section 2.3) mapped onto chapter 16's OrbitCamera. One thread drives
+// the window; each frame it asks chapter 15's device (chapter 14's renderer, whose tiles run on
 // oneTBB's workers) for one more sample per pixel, so the window answers the mouse between any
 // two passes. A gesture commits a new camera version; the scene is committed once.
 #include "viewer.h"
@@ -16,9 +16,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "13_pathtracer/render.h"
-#include "14_device/device.h"
-#include "15_viewer/orbit_camera.h"
+#include "14_pathtracer/render.h"
+#include "15_device/device.h"
+#include "16_viewer/orbit_camera.h"
 #include "device_objects.h"
 #include "image/image_io.h"
 #include "interrupt.h"
@@ -96,7 +96,7 @@ void on_cursor(GLFWwindow* window, double x, double y) {
   s.last_x = x;
   s.last_y = y;
   if (dx == 0 && dy == 0) return;
-  // [ch15-drag]
+  // [ch16-drag]
   if (s.drag_button == GLFW_MOUSE_BUTTON_LEFT && s.drag_roll)
     s.camera.roll(dx * static_cast<float>(h) / static_cast<float>(std::max(w, 1)) * kHalfTurn);
   else if (s.drag_button == GLFW_MOUSE_BUTTON_LEFT)
@@ -107,7 +107,7 @@ void on_cursor(GLFWwindow* window, double x, double y) {
     s.camera.dolly(-2.0f * dy);  // dragging up comes closer
   else
     return;
-  // [ch15-drag]
+  // [ch16-drag]
   s.moved = true;
 }
 
@@ -324,7 +324,7 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
       glfwWaitEventsTimeout(0.1);
       continue;
     }
-    // [ch15-frame]
+    // [ch16-frame]
     // While a gesture is under way the frame is rendered at a quarter of the resolution (a
     // sixteenth of the paths) and drawn enlarged: the camera follows the mouse, and full
     // resolution returns, and refines, as soon as it stops.
@@ -345,7 +345,7 @@ int run_viewer(SceneScript& script, const ViewerOptions& viewer) {
         device.render_samples(renderer, camera, scene, framebuffer, spp, 1, interrupt.flag());
     ++spp;
     tonemap_rgb8(device.read_image(framebuffer), script.tone, rgb);
-    // [ch15-frame]
+    // [ch16-frame]
     draw_texture(texture, render_width, render_height, width, height, rgb);
     ++frames;
     const bool last = viewer.frames > 0 && frames >= viewer.frames;

@@ -1,7 +1,7 @@
 /// \file
-/// The interactive viewer (chapter 15): `rtk -c scene.ecs` without -o opens a window that
+/// The interactive viewer (chapter 16): `rtk -c scene.ecs` without -o opens a window that
 /// shows the scene refined progressively, with the guide's orbit-camera controls. GLFW and
-/// OpenGL draw chapter 13's framebuffer, tone-mapped, as a texture.
+/// OpenGL draw chapter 14's framebuffer, tone-mapped, as a texture.
 #pragma once
 
 #include <span>

@@ -3,7 +3,7 @@
 # Every source is in one unit: a chapter (chapters/NN_*), a part of lib/, apps, bench, tests or
 # examples. Each unit has a height, and an #include "..." may only name a unit below its own
 # (or its own): chapter 1; then the parts of lib/ beneath the chapters (each above the ones
-# before it in the list below); chapters 2 to 15 in reading order; the parts of lib/ that
+# before it in the list below); chapters 2 to 16 in reading order; the parts of lib/ that
 # assemble chapters; apps; and on top bench, tests and examples, which do not include one
 # another. With one height per unit and includes going down only, no two units can include
 # each other, even through a third. Every violation is printed; the test fails if there is one.

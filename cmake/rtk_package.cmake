@@ -4,7 +4,7 @@
 # Benchmark or the book's tools.
 #
 # The library is not listed by hand: rtk_add_kernels_package() follows what the public API
-# (ch09_kernel_api) links, chapter by chapter, and collects every object file on the way, the per-ISA
+# (ch10_kernel_api) links, chapter by chapter, and collects every object file on the way, the per-ISA
 # ones included. A chapter that joins the API later joins the package by being linked.
 
 include(CMakePackageConfigHelpers)
@@ -208,7 +208,7 @@ endfunction()
 
 # rtk_add_render_package(API <target> HEADERS <public headers...>)
 # Adds the library rtk_render (exported as rtk::render, component `rtk_render`, package
-# component `render`): the device API of chapter 14 with everything it links (the renderer
+# component `render`): the device API of chapter 15 with everything it links (the renderer
 # chapters and the kernels), for programs that render rather than trace rays. It holds its
 # whole closure, kernels included, so a program links rtk::render alone (not with rtk::kernels).
 # Always a static library.

@@ -248,64 +248,64 @@ section_ch08() { # motion blur: what BVH4MB costs and buys; the motion-blur rend
     | tee "$OUT/ch08_render.txt"
 }
 
-section_ch10() { # sampling: the sample patterns figure; the samplers' speed
-  build ch10_figure ch10_bench
-  "$B/chapters/10_sampling/ch10_figure" chapters/10_sampling/ch10_points.png
-  gbench ch10 "$B/chapters/10_sampling/ch10_bench"
-  table ch10 chapters/10_sampling/ch10_costs.md \
-    python3 chapters/10_sampling/figure/bench_table.py "$OUT/ch10.json"
+section_ch11() { # sampling: the sample patterns figure; the samplers' speed
+  build ch11_figure ch11_bench
+  "$B/chapters/11_sampling/ch11_figure" chapters/11_sampling/ch11_points.png
+  gbench ch11 "$B/chapters/11_sampling/ch11_bench"
+  table ch11 chapters/11_sampling/ch11_costs.md \
+    python3 chapters/11_sampling/figure/bench_table.py "$OUT/ch11.json"
 }
 
-section_ch11() { # materials: the material gallery rendered by rtk; the BSDFs' speed
-  build ch11_bench
-  run_section ch11_gallery
-  gbench ch11 "$B/chapters/11_materials/ch11_bench" --benchmark_min_time=0.3
-  table ch11 chapters/11_materials/ch11_costs.md \
-    python3 chapters/11_materials/figure/bench_table.py "$OUT/ch11.json"
+section_ch12() { # materials: the material gallery rendered by rtk; the BSDFs' speed
+  build ch12_bench
+  run_section ch12_gallery
+  gbench ch12 "$B/chapters/12_materials/ch12_bench" --benchmark_min_time=0.3
+  table ch12 chapters/12_materials/ch12_costs.md \
+    python3 chapters/12_materials/figure/bench_table.py "$OUT/ch12.json"
 }
 
-section_ch11_gallery() { # materials: the material gallery, seven spheres rendered by rtk
+section_ch12_gallery() { # materials: the material gallery, seven spheres rendered by rtk
   build rtk
-  "$B/apps/rtk" render -c scenes/materials/materials.ecs -o chapters/11_materials/ch11_materials.png \
-    | tee "$OUT/ch11_gallery.txt"
+  "$B/apps/rtk" render -c scenes/materials/materials.ecs -o chapters/12_materials/ch12_materials.png \
+    | tee "$OUT/ch12_gallery.txt"
 }
 
-section_ch12() { # lights: uniform against importance-sampled directions on the HDR sky, and their variance
-  build ch12_figure
-  "$B/chapters/12_lights/ch12_figure" scenes/environment/sky.hdr chapters/12_lights/ch12_light_sampling.png \
-    | tee "$OUT/ch12.txt"
+section_ch13() { # lights: uniform against importance-sampled directions on the HDR sky, and their variance
+  build ch13_figure
+  "$B/chapters/13_lights/ch13_figure" scenes/environment/sky.hdr chapters/13_lights/ch13_light_sampling.png \
+    | tee "$OUT/ch13.txt"
 }
 
-section_ch13() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch13_convergence, ch13_equal_time
+section_ch14() { # path tracer: the Cornell box at 256 spp, samples/s per ISA; then ch14_convergence, ch14_equal_time
   build rtk bench_render
-  "$B/apps/rtk" render -c scenes/cornell_box/cornell_box.ecs -spp 256 -o chapters/13_pathtracer/ch13_cornell_box.png \
-    | tee "$OUT/ch13_render.txt"
-  table ch13 chapters/13_pathtracer/ch13_picture.md \
-    awk 'BEGIN { print "~~~" } /^render:/ { print } END { print "~~~" }' "$OUT/ch13_render.txt"
-  RTK_SCENES=$SCENES gbench ch13 "$B/bench/bench_render" --benchmark_min_time=1
-  table ch13 chapters/13_pathtracer/ch13_render.md \
-    python3 chapters/13_pathtracer/figure/bench_table.py "$OUT/ch13.json"
-  run_section ch13_convergence
-  run_section ch13_equal_time
+  "$B/apps/rtk" render -c scenes/cornell_box/cornell_box.ecs -spp 256 -o chapters/14_pathtracer/ch14_cornell_box.png \
+    | tee "$OUT/ch14_render.txt"
+  table ch14 chapters/14_pathtracer/ch14_picture.md \
+    awk 'BEGIN { print "~~~" } /^render:/ { print } END { print "~~~" }' "$OUT/ch14_render.txt"
+  RTK_SCENES=$SCENES gbench ch14 "$B/bench/bench_render" --benchmark_min_time=1
+  table ch14 chapters/14_pathtracer/ch14_render.md \
+    python3 chapters/14_pathtracer/figure/bench_table.py "$OUT/ch14.json"
+  run_section ch14_convergence
+  run_section ch14_equal_time
 }
 
-section_ch13_convergence() { # path tracer: error against samples per pixel for both samplers; the chart
+section_ch14_convergence() { # path tracer: error against samples per pixel for both samplers; the chart
   build rtk
-  bash chapters/13_pathtracer/figure/convergence.sh "$B/apps/rtk" "$OUT/ch13_convergence" \
-    chapters/13_pathtracer/ch13_convergence.png
+  bash chapters/14_pathtracer/figure/convergence.sh "$B/apps/rtk" "$OUT/ch14_convergence" \
+    chapters/14_pathtracer/ch14_convergence.png
 }
 
-section_ch13_equal_time() { # path tracer against Embree 3's pathtracer: samples/s, and error against time (chart)
+section_ch14_equal_time() { # path tracer against Embree 3's pathtracer: samples/s, and error against time (chart)
   build rtk
   command -v pathtracer >/dev/null || { echo "  (no pathtracer: install embree-tools)"; return 0; }
   local buddha=""
   have_scenes && buddha=$SCENES/happy_buddha_100k/buddha.obj
-  python3 chapters/13_pathtracer/figure/equal_time.py "$B/apps/rtk" "$OUT/ch13_equal_time" \
-    chapters/13_pathtracer $buddha
-  plot chapters/13_pathtracer/figure/equal_time.gp chapters/13_pathtracer/ch13_equal_time
+  python3 chapters/14_pathtracer/figure/equal_time.py "$B/apps/rtk" "$OUT/ch14_equal_time" \
+    chapters/14_pathtracer $buddha
+  plot chapters/14_pathtracer/figure/equal_time.gp chapters/14_pathtracer/ch14_equal_time
 }
 
-section_ch13_path_loop() { # path tracer: its path loop before and after issue 18's clean-up, against Embree 3's pathtracer
+section_ch14_path_loop() { # path tracer: its path loop before and after issue 18's clean-up, against Embree 3's pathtracer
   build rtk
   command -v pathtracer >/dev/null || { echo "  (no pathtracer: install embree-tools)"; return 0; }
   # The code before: RTK_BEFORE names an rtk built from commit 8bfce20, or it is built here
@@ -324,29 +324,29 @@ section_ch13_path_loop() { # path tracer: its path loop before and after issue 1
   fi
   local buddha=""
   have_scenes && buddha=$SCENES/happy_buddha_100k/buddha.obj
-  table ch13_path_loop chapters/13_pathtracer/ch13_path_loop.md \
-    python3 chapters/13_pathtracer/figure/path_loop.py "$before" "$B/apps/rtk" "$OUT/ch13_path_loop" $buddha
-  cat chapters/13_pathtracer/ch13_path_loop.md
+  table ch14_path_loop chapters/14_pathtracer/ch14_path_loop.md \
+    python3 chapters/14_pathtracer/figure/path_loop.py "$before" "$B/apps/rtk" "$OUT/ch14_path_loop" $buddha
+  cat chapters/14_pathtracer/ch14_path_loop.md
 }
 
-section_ch14() { # device: a frame through the device against the renderer directly, and a commit
-  build ch14_bench
-  gbench ch14 "$B/chapters/14_device/ch14_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
-  table ch14 chapters/14_device/ch14_costs.md \
-    python3 chapters/14_device/figure/bench_table.py "$OUT/ch14.json"
+section_ch15() { # device: a frame through the device against the renderer directly, and a commit
+  build ch15_bench
+  gbench ch15 "$B/chapters/15_device/ch15_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+  table ch15 chapters/15_device/ch15_costs.md \
+    python3 chapters/15_device/figure/bench_table.py "$OUT/ch15.json"
 }
 
-section_ch15() { # viewer: the window's picture under Xvfb, and frame times at two sizes
+section_ch16() { # viewer: the window's picture under Xvfb, and frame times at two sizes
   build rtk
   xvfb-run -a -s "-screen 0 1024x768x24" "$B/apps/rtk" -c scenes/cornell_box/cornell_box.ecs \
-    -size 256 256 -frames 64 -screenshot chapters/15_viewer/ch15_viewer.png
+    -size 256 256 -frames 64 -screenshot chapters/16_viewer/ch16_viewer.png
   local size  # not s: run_section's name for the section
   for size in 512 128; do
     xvfb-run -a -s "-screen 0 1024x768x24" "$B/apps/rtk" -c scenes/cornell_box/cornell_box.ecs \
-      -size $size $size -frames 20 | tee "$OUT/ch15_frames_$size.txt"
+      -size $size $size -frames 20 | tee "$OUT/ch16_frames_$size.txt"
   done
-  table ch15 chapters/15_viewer/ch15_frames.md \
-    python3 chapters/15_viewer/figure/frames_table.py "$OUT/ch15_frames_512.txt" "$OUT/ch15_frames_128.txt"
+  table ch16 chapters/16_viewer/ch16_frames.md \
+    python3 chapters/16_viewer/figure/frames_table.py "$OUT/ch16_frames_512.txt" "$OUT/ch16_frames_128.txt"
 }
 
 section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then SSE4.2) and the renderer on both
@@ -364,9 +364,9 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure.
-SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch10 ch11 ch12 ch13 ch14 ch15 embree)
-PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch11_gallery
-       ch13_convergence ch13_equal_time ch13_path_loop)
+SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch11 ch12 ch13 ch14 ch15 ch16 embree)
+PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch12_gallery
+       ch14_convergence ch14_equal_time ch14_path_loop)
 
 # --- the machine ------------------------------------------------------------------------------
 

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "01_base/timer.h"
-#include "09_kernel_api/accel.h"
+#include "10_kernel_api/accel.h"
 #include "embree/embree_scene.h"
 #include "io/obj_loader.h"
 #include "replay/compare.h"

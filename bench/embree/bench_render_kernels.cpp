@@ -7,7 +7,7 @@
 // --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
-#include "13_pathtracer/render.h"
+#include "14_pathtracer/render.h"
 #include "render_kernels/choose_kernels.h"
 #include "render_scenes.h"
 

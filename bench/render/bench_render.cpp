@@ -1,16 +1,16 @@
-// Chapter 13 benchmarks: the path tracer's throughput (camera samples and rays per second)
+// Chapter 14 benchmarks: the path tracer's throughput (camera samples and rays per second)
 // and the share of its time spent in the ray kernels, on the Cornell box with each ISA's
 // kernels and with each sampler, and on real meshes (the Stanford bunny and the Happy Buddha
 // from $RTK_SCENES, skipped without it).
-// Run: RTK_SCENES=<shared/scenes> build/bench/bench_render (bash scripts/measure.sh ch13)
+// Run: RTK_SCENES=<shared/scenes> build/bench/bench_render (bash scripts/measure.sh ch14)
 #include <benchmark/benchmark.h>
 
 #include <map>
 #include <string>
 
 #include "01_base/cpu_features.h"
-#include "13_pathtracer/render.h"
-#include "13_pathtracer/accel_kernels.h"
+#include "14_pathtracer/render.h"
+#include "14_pathtracer/accel_kernels.h"
 #include "render_scenes.h"
 
 using namespace rtk;
@@ -86,7 +86,7 @@ void BM_bunny(benchmark::State& state) {
 }
 BENCHMARK(BM_bunny)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The same Cornell box with the best ISA on one thread and each sampler of chapter 10
+// The same Cornell box with the best ISA on one thread and each sampler of chapter 11
 // (0 independent, 1 Sobol): what the sample generator costs the whole render.
 void BM_cornell_box_sampler(benchmark::State& state) {
   const SceneScript& script = bench::cornell_box_script();

@@ -9,7 +9,7 @@
 #include <memory>
 #include <optional>
 
-#include "12_lights/distant_light.h"
+#include "13_lights/distant_light.h"
 #include "scene/obj_scene.h"
 #include "scene/scene_script.h"
 

@@ -45,11 +45,11 @@ MATH = {
     "ch01_base": 3,        # the slab test
     "ch02_bvh2": 3,        # Moeller-Trumbore by Cramer's rule, the node's entry and exit
     "ch04_sah": 4,         # the SAH cost and the leaf test
-    "ch10_sampling": 3,    # the Monte Carlo estimate, the cosine-weighted density
-    "ch11_materials": 8,   # GGX, Smith's masking, visible normals, the rough conductor, plastic
+    "ch11_sampling": 3,    # the Monte Carlo estimate, the cosine-weighted density
+    "ch12_materials": 8,   # GGX, Smith's masking, visible normals, the rough conductor, plastic
     "ch07_intersectors": 2,  # the Pluecker edge function, the watertight test's edge functions
-    "ch12_lights": 3,      # the light-sampling estimate, the area and the environment densities
-    "ch13_pathtracer": 2,  # the rendering equation, the power heuristic
+    "ch13_lights": 3,      # the light-sampling estimate, the area and the environment densities
+    "ch14_pathtracer": 2,  # the rendering equation, the power heuristic
 }
 
 # Problems the book still has, by check and page: check_book.py reports them without failing,

@@ -12,7 +12,7 @@ namespace rtk {
 
 // [ch02-trace-kernels]
 /// The batch kernels of one kind of structure, for one ISA and one leaf configuration. Every
-/// structure of the book hands out its kernels in this form, and the public API (chapter 9)
+/// structure of the book hands out its kernels in this form, and the public API (chapter 10)
 /// resolves a configuration string to one such pair when it builds the structure, so that a
 /// batch reaches its traversal loop through one indirect call. The structure is passed untyped
 /// so that one pair type serves every structure; each kernel was made for one structure type

@@ -320,7 +320,7 @@ void occluded_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<uint
 // [ch03-batch-kernels]
 /// The batch kernels of an N-wide BVH whose leaves Leaf reads, all tricks on unless T says
 /// otherwise, in the form every structure hands out (02_bvh2/trace_kernels.h): `structure` is
-/// the BVHN<N>. Chapters 6 to 9 make their kernels with this too.
+/// the BVHN<N>. Chapters 6 to 10 make their kernels with this too.
 template <int N, class Leaf, Tricks T = Tricks{}>
 void intersect_batch(const void* structure, std::span<const Ray> rays, std::span<Hit> hits) {
   require_same_size(rays.size(), hits.size());

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "14_device/device.h"
+#include "15_device/device.h"
 
 namespace {
 

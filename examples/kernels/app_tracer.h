@@ -4,7 +4,7 @@
 /// for extracted kernels: adapt the interface around the core, never the core to the host.
 #pragma once
 
-#include <rtk/09_kernel_api/accel.h>
+#include <rtk/10_kernel_api/accel.h>
 
 #include <cstddef>
 #include <span>

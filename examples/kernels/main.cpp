@@ -4,8 +4,8 @@
 /// are chosen so that every answer can be worked out by hand (tests/install checks them).
 /// Usage: rtk_kernels_example [ISA]   (scalar, sse4, avx2 or avx512; the best one by default)
 
-#include <rtk/09_kernel_api/accel.h>
-#include <rtk/09_kernel_api/motion_accel.h>
+#include <rtk/10_kernel_api/accel.h>
+#include <rtk/10_kernel_api/motion_accel.h>
 
 #include <cstdint>
 #include <cstdio>

@@ -1,5 +1,5 @@
 /// \file
-/// The renderer on someone else's kernels: chapter 13's RayKernels implemented by Embree 3, so
+/// The renderer on someone else's kernels: chapter 14's RayKernels implemented by Embree 3, so
 /// that `rtk render -kernels embree` runs the same path tracer, scene and camera on Embree's
 /// BVH and intersectors instead of RTK's. The renderer cannot tell the two apart; only the
 /// time and the statistics differ (and the images, within noise: see tests/render).
@@ -8,8 +8,8 @@
 #include <span>
 #include <string>
 
-#include "13_pathtracer/ray_kernels.h"
-#include "13_pathtracer/scene.h"
+#include "14_pathtracer/ray_kernels.h"
+#include "14_pathtracer/scene.h"
 #include "embree/embree_scene.h"
 
 namespace rtk {

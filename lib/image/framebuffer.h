@@ -12,7 +12,7 @@ namespace rtk {
 
 // [image-framebuffer]
 /// Accumulates radiance samples per pixel: sum(w_i L_i) and sum(w_i). With filter importance
-/// sampling (chapter 10) every weight is 1 and the pixel value is the plain mean; a splatting
+/// sampling (chapter 11) every weight is 1 and the pixel value is the plain mean; a splatting
 /// filter would pass its filter values. Distinct pixels are distinct memory, so threads that
 /// render disjoint tiles may add to one framebuffer without locks.
 class Framebuffer {

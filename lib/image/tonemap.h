@@ -13,7 +13,7 @@ namespace rtk {
 /// clamp(c^(1/g), 0, 1), quantised to 8 bits by rounding. Values above 1 are clamped, not
 /// compressed: a linear renderer's overexposed pixels should look overexposed. Negative
 /// values and NaN become 0, +infinity becomes 255. (The guide's -vignetting is the camera's:
-/// chapter 10.)
+/// chapter 11.)
 struct ToneMap {
   float gamma = 1.0f;  ///< display gamma; 2.2 approximates an sRGB monitor
 

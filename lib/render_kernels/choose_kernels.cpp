@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "13_pathtracer/accel_kernels.h"
+#include "14_pathtracer/accel_kernels.h"
 #ifdef RTK_HAVE_EMBREE
 #include "embree/embree_kernels.h"
 #endif

@@ -2,7 +2,7 @@
 /// Which kernels trace the renderer's rays: `-kernels rtk` (the default, RTK's own structures
 /// through lib/render_kernels' AccelKernels) or `-kernels embree` (Embree 3 through
 /// lib/embree's EmbreeKernels, in builds made where Debian's libembree-dev is installed). The
-/// path tracer sees only chapter 13's RayKernels, so the choice changes nothing but who
+/// path tracer sees only chapter 14's RayKernels, so the choice changes nothing but who
 /// answers the ray queries: the guide's second way to compare, other kernels inside RTK's
 /// renderer.
 #pragma once
@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "13_pathtracer/accel_kernels.h"
+#include "14_pathtracer/accel_kernels.h"
 
 namespace rtk {
 
@@ -26,7 +26,7 @@ bool embree_kernels_available();
 RenderKernels make_render_kernels(const RenderScene& scene, const AccelConfig& config,
                                   std::string_view which);
 
-/// make_render_kernels(scene, config, which) as a factory for the device API (chapter 14).
+/// make_render_kernels(scene, config, which) as a factory for the device API (chapter 15).
 /// Checks `which` at once, so that an unknown name fails before any scene is read.
 KernelFactory kernel_factory(std::string which);
 

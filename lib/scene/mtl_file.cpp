@@ -18,7 +18,7 @@ using scene_io::fail;
 using scene_io::TextLine;
 using scene_io::Where;
 
-// [ch13-mtl-ranges]
+// [ch14-mtl-ranges]
 // The range of each number an MTL file may give, checked on the line that gives it: a
 // reflectance above 1 (Kd 1e38) would make energy, an index of refraction of 1e30 nonsense.
 struct Range {
@@ -28,7 +28,7 @@ const std::map<std::string_view, Range, std::less<>> kColorRanges = {
     {"Kd", {0, 1}}, {"Ks", {0, 1}}, {"Tf", {0, 1}}, {"Ka", {0, 1e10f}}, {"Ke", {0, 1e10f}}};
 const std::map<std::string_view, Range, std::less<>> kScalarRanges = {
     {"Ns", {0, 1e6f}}, {"Ni", {0, 10}}, {"d", {0, 1}}, {"Tr", {0, 1}}};
-// [ch13-mtl-ranges]
+// [ch14-mtl-ranges]
 
 }  // namespace
 
@@ -96,7 +96,7 @@ std::map<std::string, uint32_t> read_mtl_text(std::string_view text,
       params.set("illum", static_cast<float>(scene_io::parse_int(l.tokens[1], where, key, 0, 10)));
     } else if (key == "map_Kd" || key == "map_d" || key == "map_Bump" || key == "map_bump" ||
                key == "bump") {
-      // [ch13-mtl-maps]
+      // [ch14-mtl-maps]
       // A texture statement: options, then the file name, the last token. The colour map is
       // read by the scene's conventions; the opacity and height maps hold data, not colours:
       // always linear and interpolated (a height's slope needs the interpolation), with the
@@ -115,7 +115,7 @@ std::map<std::string, uint32_t> read_mtl_text(std::string_view text,
           break;
         }
       }
-      // [ch13-mtl-maps]
+      // [ch14-mtl-maps]
       const std::filesystem::path image = path.parent_path() / std::string(l.tokens.back());
       TextureConventions data = conventions;
       data.encoding = ColorEncoding::linear;

@@ -1,5 +1,5 @@
 /// \file
-/// MTL material libraries (the `mtllib` of OBJ files), read into chapter 11's "OBJ" materials.
+/// MTL material libraries (the `mtllib` of OBJ files), read into chapter 12's "OBJ" materials.
 ///
 /// Keys: `newmtl NAME`; `Kd Ks Tf` (three numbers or one grey, each from 0 to 1), `Ka Ke`
 /// (0 to 1e10: the guide's files give Ka 20, lamps need large Ke); `Ns` (0 to 1e6), `Ni` (0 to
@@ -9,7 +9,7 @@
 /// and `map_Bump` or `bump [-bm SCALE] [options] FILE` (heights), data maps read as linear
 /// values and interpolated; other texture options are ignored with a warning. Every value is
 /// checked where it is read, so that an error names the MTL file and line; a material that
-/// chapter 11 refuses as a whole is reported at its `newmtl` line. Other keys (map_Ks, ...)
+/// chapter 12 refuses as a whole is reported at its `newmtl` line. Other keys (map_Ks, ...)
 /// are warned about once per file and ignored.
 #pragma once
 
@@ -18,8 +18,8 @@
 #include <string>
 #include <string_view>
 
-#include "11_materials/material.h"
-#include "13_pathtracer/scene.h"
+#include "12_materials/material.h"
+#include "14_pathtracer/scene.h"
 
 namespace rtk {
 

@@ -12,7 +12,7 @@
 ///   about and gets the default grey Matte); `mtllib FILE...` reads MTL files, relative to the
 ///   OBJ file's folder;
 /// - MTL: `newmtl`, `Kd Ks Ka Ke Tf` (three numbers, or one for a grey), `Ns Ni d Tr illum`,
-///   `map_Kd FILE` (a texture, sRGB-decoded); they become chapter 11's "OBJ" material through
+///   `map_Kd FILE` (a texture, sRGB-decoded); they become chapter 12's "OBJ" material through
 ///   make_material, whose warnings say what is approximated. A material with a non-zero `Ke`
 ///   emits: each of its triangles becomes a TriangleLight shining on the side its corners
 ///   turn counter-clockwise toward (the OBJ front face). Other keys (map_Ks, bump, ...) are
@@ -24,15 +24,15 @@
 #include <functional>
 #include <string>
 
-#include "11_materials/material.h"
-#include "13_pathtracer/scene.h"
+#include "12_materials/material.h"
+#include "14_pathtracer/scene.h"
 
 namespace rtk {
 
 /// Appends the triangles, vertices, materials and emitting triangles of an OBJ file (and of
 /// the MTL files it names) to `scene`. Throws FileError (file and line) for a malformed line
 /// or a file that cannot be read; warnings go to `warn`.
-/// Texture files (map_Kd) are read by `conventions` (chapter 11).
+/// Texture files (map_Kd) are read by `conventions` (chapter 12).
 void load_obj_scene(const std::filesystem::path& path, RenderScene& scene,
                     const WarningHandler& warn = {}, const TextureConventions& conventions = {});
 

@@ -29,7 +29,7 @@ inline constexpr int kMaxXmlDepth = 256;
 inline constexpr std::uint64_t kMaxGeneratedTriangles = std::uint64_t(1) << 20;
 
 /// The most pixels `-size W H` may ask for: 2^26 (8192 x 8192), about 2 GB of framebuffer and
-/// images (each side may be up to 32,768, as chapter 13's renderer allows).
+/// images (each side may be up to 32,768, as chapter 14's renderer allows).
 inline constexpr std::uint64_t kMaxRenderPixels = std::uint64_t(1) << 26;
 
 }  // namespace rtk

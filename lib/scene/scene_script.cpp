@@ -6,10 +6,10 @@
 #include <memory>
 #include <stdexcept>
 
-#include "12_lights/area_light.h"
-#include "12_lights/distant_light.h"
-#include "12_lights/environment_light.h"
-#include "12_lights/point_light.h"
+#include "13_lights/area_light.h"
+#include "13_lights/distant_light.h"
+#include "13_lights/environment_light.h"
+#include "13_lights/point_light.h"
 #include "image/image_io.h"
 #include "io/read_file.h"
 #include "scene/obj_scene.h"
@@ -34,7 +34,7 @@ struct Token {
   Where where;
 };
 
-// [ch13-script-tokens]
+// [ch14-script-tokens]
 // A script is a command line in a file: tokens separated by any ASCII white space (space, tab,
 // CR, LF, vertical tab, form feed), '#' to the end of the line a comment, a UTF-8 byte-order
 // mark at the start ignored. Every other control byte (NUL, ESC, ...) is binary data and an
@@ -74,7 +74,7 @@ std::vector<Token> tokenize(std::string_view text, const std::string& file) {
   }
   return tokens;
 }
-// [ch13-script-tokens]
+// [ch14-script-tokens]
 
 // Reads one token list (a script or the command line) into the script state.
 class ScriptReader {
@@ -409,7 +409,7 @@ class ScriptReader {
       s_.after_last_output.clear();
     } else if (name == "-conventions") {
       // The images read after it: Embree 1.1's conventions (the guide's scenes were made for
-      // them) or RTK's (chapter 11's TextureConventions says how they differ).
+      // them) or RTK's (chapter 12's TextureConventions says how they differ).
       const Token& t = take(o, "embree1.1 or rtk");
       if (t.text == "embree1.1")
         s_.conventions = TextureConventions::embree11();
@@ -418,7 +418,7 @@ class ScriptReader {
       else
         fail(t.where, "-conventions: unknown conventions '" + scene_io::shown(t.text) + "' (embree1.1 or rtk)");
     } else if (name == "-righthanded" || name == "-lefthanded") {
-      // Embree 1.1's camera is left-handed (chapter 10); Embree 2 and 3 added the choice, and
+      // Embree 1.1's camera is left-handed (chapter 11); Embree 2 and 3 added the choice, and
       // Embree 3's scripts expect right-handed. RTK's own scenes say which they are.
       cam.right_handed = name == "-righthanded";
     } else if (name == "-backplate") {
@@ -462,7 +462,7 @@ class ScriptReader {
         fail(t.where, "-reference: cannot open '" + path.string() + "'");
       s_.reference = path;
     } else if (name == "-vignetting") {
-      // Embree 1.1's switch, read as the natural cos^4 falloff of a real camera (chapter 10).
+      // Embree 1.1's switch, read as the natural cos^4 falloff of a real camera (chapter 11).
       cam.vignetting = integer(o, 0, 1) != 0;
     } else if (name == "-display") {
       warn(o.where, o.text + ": the viewer is opened by running rtk without -o");
@@ -500,7 +500,7 @@ class ScriptReader {
       }
   }
 
-  // [ch13-script-outputs]
+  // [ch14-script-outputs]
   // Before the scene changes, the outputs named so far keep a copy of it as it is (one copy,
   // shared by all of them); an output named after the last change renders the final scene.
   void keep_scene_for_outputs() {
@@ -512,7 +512,7 @@ class ScriptReader {
       }
   }
 
-  // [ch13-script-outputs]
+  // [ch14-script-outputs]
 
   static std::string where_text(const Where& w) {
     return w.line ? w.file + ":" + std::to_string(w.line) : w.file;

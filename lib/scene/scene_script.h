@@ -14,7 +14,7 @@
 /// -distantlight d L halfAngle, -trianglelight P U V L, -quadlight P U V L, -hdrilight r g b
 /// FILE, -trisphere p r numTheta numPhi, -righthanded, -lefthanded, -o FILE (rendered with the
 /// state set up before it; ScriptOutput), -conventions, -backplate, and the viewer's -fullscreen
-/// and -refine; -vignetting 0|1 (the cos^4 falloff of chapter 10's camera). RTK's own -time SECONDS and
+/// and -refine; -vignetting 0|1 (the cos^4 falloff of chapter 11's camera). RTK's own -time SECONDS and
 /// -reference IMAGE are for `rtk render` (equal-time rendering and its error).
 /// script_option_help() lists them all. `#` starts a comment; files are named relative to the
 /// script that names them.
@@ -38,10 +38,10 @@
 #include <string_view>
 #include <vector>
 
-#include "09_kernel_api/accel.h"
-#include "11_materials/material.h"
-#include "13_pathtracer/render.h"
-#include "13_pathtracer/scene.h"
+#include "10_kernel_api/accel.h"
+#include "12_materials/material.h"
+#include "14_pathtracer/render.h"
+#include "14_pathtracer/scene.h"
 #include "image/tonemap.h"
 #include "scene/parse_number.h"
 

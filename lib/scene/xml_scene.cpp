@@ -10,11 +10,11 @@
 #include <pugixml.hpp>
 #include <set>
 
-#include "12_lights/area_light.h"
-#include "12_lights/distant_light.h"
-#include "12_lights/environment_light.h"
-#include "12_lights/point_light.h"
-#include "14_device/sphere_mesh.h"
+#include "13_lights/area_light.h"
+#include "13_lights/distant_light.h"
+#include "13_lights/environment_light.h"
+#include "13_lights/point_light.h"
+#include "15_device/sphere_mesh.h"
 #include "io/file_error.h"
 #include "io/read_file.h"
 #include "scene/obj_scene.h"
@@ -227,7 +227,7 @@ class XmlReader {
       if (n.type() == pugi::node_element) node(n, xfm);
   }
 
-  // [ch13-xml-depth]
+  // [ch14-xml-depth]
   // The reader descends the scene graph recursively, one call per level of elements and per
   // <ref> followed: the depth is bounded so that a file nested 12,000 deep is an error at the
   // element that goes too deep, not a stack overflow.
@@ -239,7 +239,7 @@ class XmlReader {
     visit(n, xfm);
     --depth_;
   }
-  // [ch13-xml-depth]
+  // [ch14-xml-depth]
 
   void visit(const pugi::xml_node& n, const Affine& xfm) {
     const std::string name = n.name();
@@ -277,7 +277,7 @@ class XmlReader {
     return *target;
   }
 
-  // [ch13-xml-budget]
+  // [ch14-xml-budget]
   // Every triangle a reference adds is a copy, counted against the budget before the copy is
   // made: the triangles an assigned scene holds are counted once, without reading it, so that
   // 3.6 KB of references that double at every level are refused at the first <ref>, before
@@ -293,7 +293,7 @@ class XmlReader {
     --in_reference_;
     scope_ = outer;
   }
-  // [ch13-xml-budget]
+  // [ch14-xml-budget]
 
   // The triangles reading `n` would add, counted without reading it (included files count
   // for nothing here; they are charged once read). The count descends as the reading would,
@@ -603,7 +603,7 @@ class XmlReader {
       if (name == "PointLight") {
         scene_.add_light(std::make_shared<PointLight>(space.p, color("I")));
       } else if (name == "SpotLight") {
-        // Chapter 12's spot: at the frame's origin, pointing along its z axis.
+        // Chapter 13's spot: at the frame's origin, pointing along its z axis.
         scene_.add_light(std::make_shared<SpotLight>(space.p, space.vector({0, 0, 1}), color("I"),
                                                      number(require(n, "angleMin")),
                                                      number(require(n, "angleMax"))));

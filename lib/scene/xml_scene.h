@@ -1,15 +1,15 @@
 /// \file
-/// The Embree scene graph in XML (FORMATS.md section 2), read into chapter 13's RenderScene.
+/// The Embree scene graph in XML (FORMATS.md section 2), read into chapter 14's RenderScene.
 ///
 /// Read: `<scene>`, `<Group>`, `<Transform>` (its first child an `<AffineSpace>`: a body of 12
 /// numbers, a 3x4 row-major matrix whose last column is the translation, or one of the
 /// attributes translate, scale, rotate_x, rotate_y, rotate_z, rotate + axis), `<TriangleMesh>`
 /// (positions, optional motions (p(t) = p + t m), normals, texcoords, triangles, material),
 /// `<Sphere>` (position, radius, numTheta, numPhi, optional motion, material; tessellated as
-/// chapter 14's tessellate_sphere), lights (`<PointLight>`, `<SpotLight>` approximated by a
+/// chapter 15's tessellate_sphere), lights (`<PointLight>`, `<SpotLight>` approximated by a
 /// point light, `<DirectionalLight>`, `<DistantLight>`, `<AmbientLight>`, `<TriangleLight>`,
 /// `<QuadLight>`, `<HDRILight>`), materials (`<material>` with `<code>` and `<parameters>`,
-/// made by chapter 11's make_material, which warns about what it approximates), reuse
+/// made by chapter 12's make_material, which warns about what it approximates), reuse
 /// (`<assign type="material|scene" id>`, `<material id/>`, `<ref id/>`), inclusion (`<obj
 /// src>`, `<xml src>`, `<extern src>`, `<material file>`), and binary arrays (`ofs`, `size`)
 /// from the side file (`scene.bin`, then `scene.xml.bin`). The 2.x cameras are ignored with a
@@ -26,8 +26,8 @@
 #include <filesystem>
 #include <string_view>
 
-#include "11_materials/material.h"
-#include "13_pathtracer/scene.h"
+#include "12_materials/material.h"
+#include "14_pathtracer/scene.h"
 
 namespace rtk {
 
@@ -35,7 +35,7 @@ namespace rtk {
 /// "FILE:LINE: message" for malformed XML, a malformed or missing value, an index out of
 /// range, a binary array outside its side file, or a file that cannot be read; warnings go to
 /// `warn`.
-/// Textures and HDRILight images are read by `conventions` (chapters 11 and 12).
+/// Textures and HDRILight images are read by `conventions` (chapters 12 and 13).
 void load_xml_scene(const std::filesystem::path& path, RenderScene& scene, const WarningHandler& warn = {},
                     const TextureConventions& conventions = {});
 

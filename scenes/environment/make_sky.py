@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes sky.hdr, the environment map of environment.ecs: a latitude-longitude image (row 0
-the zenith, +y up, as chapter 12's EnvironmentLight reads it) of a blue sky that brightens
+the zenith, +y up, as chapter 13's EnvironmentLight reads it) of a blue sky that brightens
 toward the horizon, a darker ground, and a small sun 35 degrees above the horizon that is
 some thousand times brighter than the sky, the case importance sampling of the map is for.
 Radiance RGBE, flat (unencoded) scanlines, which every reader accepts. Run: python3 make_sky.py"""

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "09_kernel_api/accel.h"
+#include "10_kernel_api/accel.h"
 #include "testing/brute_force.h"
 #include "io/obj_loader.h"
 #include "io/obj_writer.h"

@@ -28,8 +28,8 @@ set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
 run("cmake --install" ${CMAKE_COMMAND} --install ${RTK_BUILD_DIR} --prefix ${prefix}
     --component rtk_kernels --config ${BUILD_TYPE})
-if(NOT EXISTS ${prefix}/include/rtk/09_kernel_api/accel.h)
-  message(FATAL_ERROR "the install has no include/rtk/09_kernel_api/accel.h")
+if(NOT EXISTS ${prefix}/include/rtk/10_kernel_api/accel.h)
+  message(FATAL_ERROR "the install has no include/rtk/10_kernel_api/accel.h")
 endif()
 
 # Step 2: a shared library must export the API and nothing of the per-ISA kernels.
@@ -99,13 +99,13 @@ foreach(isa "" scalar)
   endforeach()
 endforeach()
 
-# Step 5: the render component (rtk::render, chapter 14's device API) into the same prefix,
+# Step 5: the render component (rtk::render, chapter 15's device API) into the same prefix,
 # and examples/device built against it as an outside project; it renders a small scene made
 # through handles and exits 0 only if its images are not black.
 run("cmake --install (rtk_render)" ${CMAKE_COMMAND} --install ${RTK_BUILD_DIR} --prefix ${prefix}
     --component rtk_render --config ${BUILD_TYPE})
-if(NOT EXISTS ${prefix}/include/rtk/14_device/device.h)
-  message(FATAL_ERROR "the install has no include/rtk/14_device/device.h")
+if(NOT EXISTS ${prefix}/include/rtk/15_device/device.h)
+  message(FATAL_ERROR "the install has no include/rtk/15_device/device.h")
 endif()
 set(configure_args -S ${RTK_SOURCE_DIR}/examples/device -B ${WORK_DIR}/build_device -G ${GENERATOR}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${BUILD_TYPE} -DCMAKE_CXX_COMPILER=${CXX}

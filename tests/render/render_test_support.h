@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <string>
 
-#include "10_sampling/warp.h"
-#include "13_pathtracer/render.h"
-#include "13_pathtracer/scene.h"
+#include "11_sampling/warp.h"
+#include "14_pathtracer/render.h"
+#include "14_pathtracer/scene.h"
 #include "image/image.h"
-#include "13_pathtracer/accel_kernels.h"
+#include "14_pathtracer/accel_kernels.h"
 #include "scene/scene_script.h"
 
 namespace rtk::test {

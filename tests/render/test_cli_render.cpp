@@ -25,7 +25,7 @@ const std::string kCornell = std::string(RTK_SOURCE_DIR) + "/scenes/cornell_box/
 
 }  // namespace
 
-TEST_CASE("ch13: rtk render writes a PNG of the size asked for") {
+TEST_CASE("ch14: rtk render writes a PNG of the size asked for") {
   const fs::path out = fs::temp_directory_path() / ("rtk_render_cli_" + std::to_string(getpid()) + ".png");
   const Result r = run_rtk("render -c " + kCornell + " -size 24 16 -spp 2 -threads 2 -o " + out.string());
   INFO(r.output);
@@ -47,10 +47,10 @@ TEST_CASE("ch13: rtk render writes a PNG of the size asked for") {
   fs::remove(out);
 }
 
-TEST_CASE("ch13: rtk render goes through the device and writes chapter 13's image, bit for bit") {
-  // The command hands the script's scene to chapter 14's device, which renders from committed
+TEST_CASE("ch14: rtk render goes through the device and writes chapter 14's image, bit for bit") {
+  // The command hands the script's scene to chapter 15's device, which renders from committed
   // versions; a PFM file keeps the linear floats, so the file must hold exactly the image that
-  // chapter 13's renderer makes of the same scene and options in this process.
+  // chapter 14's renderer makes of the same scene and options in this process.
   const fs::path out = fs::temp_directory_path() / ("rtk_render_device_" + std::to_string(getpid()) + ".pfm");
   const Result r = run_rtk("render -c " + kCornell + " -size 20 14 -spp 3 -seed 5 -threads 2 -o " + out.string());
   INFO(r.output);
@@ -69,7 +69,7 @@ TEST_CASE("ch13: rtk render goes through the device and writes chapter 13's imag
   CHECK(differ == 0);
 }
 
-TEST_CASE("ch13: rtk render refuses what it cannot do, with exit status 2") {
+TEST_CASE("ch14: rtk render refuses what it cannot do, with exit status 2") {
   const Result no_output = run_rtk("render -c " + kCornell + " -size 8 8");
   CHECK(no_output.status == 2);
   CHECK(no_output.output.find("-o") != std::string::npos);
@@ -129,7 +129,7 @@ std::pair<double, double> red_minus_green(const rtk::Image& image) {
 }
 }  // namespace
 
-TEST_CASE("ch13: the measured Cornell box is right-handed, red on the left; -lefthanded mirrors it") {
+TEST_CASE("ch14: the measured Cornell box is right-handed, red on the left; -lefthanded mirrors it") {
   const fs::path out = fs::temp_directory_path() / ("rtk_handed_" + std::to_string(getpid()) + ".pfm");
   // 256 samples per pixel: at 8 the halves' sums still move by a third between the two images.
   const std::string common = "render -c " + kCornell + " -size 16 16 -spp 256 -threads 2 ";
@@ -147,7 +147,7 @@ TEST_CASE("ch13: the measured Cornell box is right-handed, red on the left; -lef
   fs::remove(out);
 }
 
-TEST_CASE("ch13: each -o renders at its position, as in Embree 1.1") {
+TEST_CASE("ch14: each -o renders at its position, as in Embree 1.1") {
   const fs::path dir = fs::temp_directory_path() / ("rtk_outputs_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const std::string a = (dir / "a.pfm").string(), b = (dir / "b.ppm").string(), c = (dir / "c.pfm").string();
@@ -168,7 +168,7 @@ TEST_CASE("ch13: each -o renders at its position, as in Embree 1.1") {
   fs::remove_all(dir);
 }
 
-TEST_CASE("ch13: rtk render writes OpenEXR, and reads it back as an environment map") {
+TEST_CASE("ch14: rtk render writes OpenEXR, and reads it back as an environment map") {
   const fs::path dir = fs::temp_directory_path() / ("rtk_exr_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const std::string exr = (dir / "box.exr").string(), pfm = (dir / "box.pfm").string();
@@ -202,7 +202,7 @@ bool same_pixels(const rtk::Image& a, const rtk::Image& b) {
 }
 }  // namespace
 
-TEST_CASE("ch13: rtk render -time renders progressively, and its image is that of the samples it reached") {
+TEST_CASE("ch14: rtk render -time renders progressively, and its image is that of the samples it reached") {
   // Whatever the machine's speed, the passes of -time must add up to exactly the image of
   // -spp N, N being the count it reports: the test holds on a slow machine and a fast one.
   const std::string tag = std::to_string(getpid());
@@ -222,7 +222,7 @@ TEST_CASE("ch13: rtk render -time renders progressively, and its image is that o
   fs::remove(fixed);
 }
 
-TEST_CASE("ch13: rtk render -reference prints the relative RMS error against a converged image") {
+TEST_CASE("ch14: rtk render -reference prints the relative RMS error against a converged image") {
   const std::string tag = std::to_string(getpid());
   const fs::path ref = fs::temp_directory_path() / ("rtk_reference_" + tag + ".pfm");
   const fs::path out = fs::temp_directory_path() / ("rtk_reference_out_" + tag + ".pfm");

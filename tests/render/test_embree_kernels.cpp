@@ -39,7 +39,7 @@ RenderOptions small(const SceneScript& script, int size, int spp, uint32_t seed)
 
 }  // namespace
 
-TEST_CASE("ch13: the same seed on RTK's and Embree's kernels gives nearly the same pixels") {
+TEST_CASE("ch14: the same seed on RTK's and Embree's kernels gives nearly the same pixels") {
   // The random numbers depend only on pixel, sample and seed, so the two renders trace the same
   // paths until a hit differs in its last bits (Embree's Möller-Trumbore test rounds
   // differently), which moves a bounce's origin by ulps and, rarely, sends a path down another
@@ -62,7 +62,7 @@ TEST_CASE("ch13: the same seed on RTK's and Embree's kernels gives nearly the sa
   CHECK(sum_embree == doctest::Approx(sum_rtk).epsilon(0.005));
 }
 
-TEST_CASE("ch13: with independent seeds the two kernels' images agree within the noise") {
+TEST_CASE("ch14: with independent seeds the two kernels' images agree within the noise") {
   // Each pixel's difference d = rtk - embree has expectation 0 if both kernels find the same
   // surfaces, and the pixels' samplers are independent, so the mean of the P differences has
   // standard error s / sqrt(P) (s their sample standard deviation). A kernel that lost hits
@@ -84,7 +84,7 @@ TEST_CASE("ch13: with independent seeds the two kernels' images agree within the
   CHECK(std::fabs(mean) <= bound);
 }
 
-TEST_CASE("ch13: -kernels embree refuses what applies only to RTK's kernels") {
+TEST_CASE("ch14: -kernels embree refuses what applies only to RTK's kernels") {
   const SceneScript script = test::cornell_box();
   AccelConfig config;
   config.accel = "bvh4";
@@ -98,7 +98,7 @@ TEST_CASE("ch13: -kernels embree refuses what applies only to RTK's kernels") {
                        doctest::Contains("-kernels rtk"), std::invalid_argument);
 }
 
-TEST_CASE("ch13: rtk render -kernels embree writes the image and says which kernels it used") {
+TEST_CASE("ch14: rtk render -kernels embree writes the image and says which kernels it used") {
   const std::string out = (std::filesystem::temp_directory_path() /
                            ("rtk_render_embree_" + std::to_string(::getpid()) + ".png"))
                               .string();

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "12_lights/distant_light.h"
+#include "13_lights/distant_light.h"
 #include "render_test_support.h"
 
 using namespace rtk;
@@ -32,7 +32,7 @@ RenderScene furnace_scene(bool concave) {
 
 }  // namespace
 
-TEST_CASE("ch13: white furnace, convex: every pixel is exactly 1") {
+TEST_CASE("ch14: white furnace, convex: every pixel is exactly 1") {
   // A white Lambertian sphere under a uniform white sky. Light sampling (cosine around the
   // normal) and BSDF sampling (cosine too) have the same density, so each takes MIS weight
   // 1/2 and each estimates exactly 1/2: no noise at all, any error is a bias (a wrong MIS
@@ -48,7 +48,7 @@ TEST_CASE("ch13: white furnace, convex: every pixel is exactly 1") {
   }
 }
 
-TEST_CASE("ch13: white furnace, concave: the mean is 1 within the noise") {
+TEST_CASE("ch14: white furnace, concave: the mean is 1 within the noise") {
   // Surfaces of albedo 1 in a sky of radiance 1 reflect exactly what they receive, so every
   // pixel's expected value is 1, however often light bounces (Russian roulette keeps the
   // estimate unbiased). The noise bound: the P pixels are independent estimates (their
@@ -76,7 +76,7 @@ TEST_CASE("ch13: white furnace, concave: the mean is 1 within the noise") {
   CHECK(std::fabs(mean - 1.0) <= bound);
 }
 
-TEST_CASE("ch13: images are identical for 1 and 2 threads and for split passes") {
+TEST_CASE("ch14: images are identical for 1 and 2 threads and for split passes") {
   SceneScript script = test::cornell_box();
   RenderOptions options = script.options;
   options.width = 40;
@@ -112,7 +112,7 @@ TEST_CASE("ch13: images are identical for 1 and 2 threads and for split passes")
   CHECK_FALSE(other.resolve().pixels == a.pixels);
 }
 
-TEST_CASE("ch13: minContribution ends faint paths: none at 0, the bounced light above every throughput") {
+TEST_CASE("ch14: minContribution ends faint paths: none at 0, the bounced light above every throughput") {
   SceneScript script = test::cornell_box();
   RenderOptions options = script.options;
   options.width = 16;
@@ -143,7 +143,7 @@ TEST_CASE("ch13: minContribution ends faint paths: none at 0, the bounced light 
   CHECK(cut > mean(render(0.0f, 0)));
 }
 
-TEST_CASE("ch13: camera rays that meet nothing see the backplate; reflections see the lights") {
+TEST_CASE("ch14: camera rays that meet nothing see the backplate; reflections see the lights") {
   // A white sphere in the middle of a 6 x 4 frame, a backplate of six by four distinct texels
   // looked up nearest, under a uniform sky.
   RenderScene scene;
@@ -178,7 +178,7 @@ TEST_CASE("ch13: camera rays that meet nothing see the backplate; reflections se
   CHECK(centre.r > 0.9f);
 }
 
-TEST_CASE("ch13: the Cornell box converges like 1/sqrt(spp)") {
+TEST_CASE("ch14: the Cornell box converges like 1/sqrt(spp)") {
   // RMS error against a 128-spp reference (another seed, so that its samples are not the
   // test images' own) at 1, 4 and 16 spp. Independent samples: error ~ spp^-1/2. The
   // reference's own noise adds var/128 to var/spp, which flattens the fitted slope to about
@@ -222,7 +222,7 @@ TEST_CASE("ch13: the Cornell box converges like 1/sqrt(spp)") {
   CHECK(slope > -0.65);
 }
 
-TEST_CASE("ch13: renderer refuses bad options") {
+TEST_CASE("ch14: renderer refuses bad options") {
   RenderScene scene = furnace_scene(false);
   const AccelKernels kernels(scene, {});
   RenderOptions bad;
@@ -273,7 +273,7 @@ class StoppingKernels : public RayKernels {
 }  // namespace
 
 TEST_CASE(
-    "ch13: a stop request ends the render at the next tile, keeping every finished tile whole") {
+    "ch14: a stop request ends the render at the next tile, keeping every finished tile whole") {
   const RenderScene scene = furnace_scene(false);
   const AccelKernels kernels(scene, {});
   RenderOptions options;
@@ -312,7 +312,7 @@ TEST_CASE(
   CHECK(empty == 64 * 32 - 16 * 16);
 }
 
-TEST_CASE("ch13: every ISA's kernels render the image the scalar kernels render") {
+TEST_CASE("ch14: every ISA's kernels render the image the scalar kernels render") {
   // The same layout and intersector in every variant: the random numbers depend only on the
   // pixel and sample, so paths differ only where a hit differs in its last bits, which moves
   // a bounce's origin by ulps. Pixels may then differ slightly, never the picture.

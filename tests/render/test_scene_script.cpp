@@ -12,7 +12,7 @@
 
 #include "io/file_error.h"
 #include "render_test_support.h"
-#include "15_viewer/orbit_camera.h"
+#include "16_viewer/orbit_camera.h"
 #include "scene/obj_scene.h"
 #include "scene/scene_script.h"
 
@@ -64,7 +64,7 @@ void expect_error(const TempDir& dir, const std::string& script, const std::stri
 
 }  // namespace
 
-TEST_CASE("ch13: a valid script loads geometry, materials, lights, camera and options") {
+TEST_CASE("ch14: a valid script loads geometry, materials, lights, camera and options") {
   TempDir dir;
   dir.write("box.obj", kObj);
   dir.write("box.mtl", kMtl);
@@ -111,7 +111,7 @@ TEST_CASE("ch13: a valid script loads geometry, materials, lights, camera and op
   CHECK(s.options.width == 8);
 }
 
-TEST_CASE("ch13: the Embree 1.1 Cornell box script loads unmodified") {
+TEST_CASE("ch14: the Embree 1.1 Cornell box script loads unmodified") {
   const char* root = std::getenv("RTK_SCENES");
   const fs::path path = fs::path(root ? root : "/work/shared/scenes") / "embree_models/v1.1_release_2012/cornell_box.ecs";
   if (!fs::exists(path)) {
@@ -130,7 +130,7 @@ TEST_CASE("ch13: the Embree 1.1 Cornell box script loads unmodified") {
   CHECK(sum > 0.0);
 }
 
-TEST_CASE("ch13: every kind of malformed script line names its file and line") {
+TEST_CASE("ch14: every kind of malformed script line names its file and line") {
   TempDir dir;
   expect_error(dir, "-vp 0 0 0\n-bogus 1\n", "bad.ecs", 2, "unknown option");
   expect_error(dir, "-size 64\n", "bad.ecs", 1, "missing");
@@ -159,7 +159,7 @@ TEST_CASE("ch13: every kind of malformed script line names its file and line") {
   expect_error(dir, "-c inner.ecs\n", "inner.ecs", 1, "missing");
 }
 
-TEST_CASE("ch13: OBJ vertices are split by their attributes, primIDs follow the file") {
+TEST_CASE("ch14: OBJ vertices are split by their attributes, primIDs follow the file") {
   TempDir dir;
   dir.write("box.mtl", kMtl);
   const fs::path obj = dir.write("box.obj", kObj);
@@ -181,7 +181,7 @@ TEST_CASE("ch13: OBJ vertices are split by their attributes, primIDs follow the 
   CHECK(light->normal().z == doctest::Approx(-1.0));
 }
 
-TEST_CASE("scene scripts read back the camera the viewer prints (chapter 15's c key)") {
+TEST_CASE("scene scripts read back the camera the viewer prints (chapter 16's c key)") {
   for (const bool right_handed : {false, true}) {
   OrbitCamera c;
   c.right_handed = right_handed;

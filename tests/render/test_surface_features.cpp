@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "12_lights/distant_light.h"
-#include "12_lights/point_light.h"
+#include "13_lights/distant_light.h"
+#include "13_lights/point_light.h"
 #include "render_test_support.h"
 
 using namespace rtk;
@@ -47,7 +47,7 @@ RenderOptions small(int w, int h, int spp, int depth) {
 
 }  // namespace
 
-TEST_CASE("ch13: a half-transparent sheet between a light and a floor lets half the light through") {
+TEST_CASE("ch14: a half-transparent sheet between a light and a floor lets half the light through") {
   // A white floor under a point light; the camera looks at it from below the sheet, so that
   // only shadow rays cross the sheet (black, d = 0.5). Direct light only (depth 1).
   auto scene = [](bool sheet) {
@@ -74,7 +74,7 @@ TEST_CASE("ch13: a half-transparent sheet between a light and a floor lets half 
   }
 }
 
-TEST_CASE("ch13: camera rays pass a sheet of opacity d with probability 1 - d") {
+TEST_CASE("ch14: camera rays pass a sheet of opacity d with probability 1 - d") {
   // An emitting wall fills the view behind a black sheet of opacity 0.25.
   auto scene = [](float opacity) {
     RenderScene s;
@@ -96,7 +96,7 @@ TEST_CASE("ch13: camera rays pass a sheet of opacity d with probability 1 - d") 
   CHECK(mean(test::render_image(scene(0.25f), options)) == doctest::Approx(0.75).epsilon(0.04));
 }
 
-TEST_CASE("ch13: a map_d cut-out renders as the geometry without the cut-out part") {
+TEST_CASE("ch14: a map_d cut-out renders as the geometry without the cut-out part") {
   // A white card in front of a grey floor under a uniform sky, seen at an angle; the card's
   // right half is cut out by a two-texel opacity map (1, 0), or simply not there.
   auto scene = [](bool cut_out) {
@@ -134,7 +134,7 @@ TEST_CASE("ch13: a map_d cut-out renders as the geometry without the cut-out par
   CHECK(std::fabs(mean(cut) - mean(half)) < 1e-3);
 }
 
-TEST_CASE("ch13: texture tangents: how the point moves per unit of u and v") {
+TEST_CASE("ch14: texture tangents: how the point moves per unit of u and v") {
   RenderScene s;
   // A quad whose texture is rotated and stretched: u runs along +y, 2 units per unit of u;
   // v along -x, 4 units per unit of v.
@@ -150,7 +150,7 @@ TEST_CASE("ch13: texture tangents: how the point moves per unit of u and v") {
   }
 }
 
-TEST_CASE("ch13: vignetting: a uniform sky seen through the camera falls off as cos^4") {
+TEST_CASE("ch14: vignetting: a uniform sky seen through the camera falls off as cos^4") {
   RenderScene s;
   test::add_quad(s, {-1, -1, -20}, {0, 2, 0}, {2, 0, 0}, lambertian(s, Color(0.5f)));  // behind the camera
   s.add_light(std::make_shared<AmbientLight>(Color(1.0f)));

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The viewer end to end (chapter 15): under Xvfb, open the viewer on a scene with its fixed
+# The viewer end to end (chapter 16): under Xvfb, open the viewer on a scene with its fixed
 # camera for N frames of 1 sample per pixel, save the window's pixels, and compare them with
 # `rtk render` of the same camera, size, seed and N samples per pixel. Both go through the
 # same tone mapping to 8 bits, and render_pass makes N passes of 1 sample exactly the image of

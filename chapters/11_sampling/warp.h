@@ -1,0 +1,114 @@
+/// \file
+/// Warping functions: maps from the unit square to disks, hemispheres, spheres, cones and
+/// triangles, each with the density of the points it produces. Directions are in a local
+/// frame with z up (see frame.h).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "01_base/vec3.h"
+#include "11_sampling/vec2.h"
+
+namespace rtk {
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
+inline constexpr float kInvPi = std::numbers::inv_pi_v<float>;
+
+/// sqrt of max(x, 0): rounding can push 1 - x*x a hair below zero.
+inline float safe_sqrt(float x) { return std::sqrt(std::max(x, 0.0f)); }
+
+// [ch11-disk]
+/// Cosine and sine of an angle within [-pi/4, pi/4], by their Taylor series: on so short an
+/// interval the terms up to x^10 and x^9 leave an error below a tenth of a float's ulp, and a
+/// few multiplications cost less than the library's sincosf, which must first reduce any
+/// angle to this interval.
+inline Vec2f cos_sin_quarter(float x) {
+  const float x2 = x * x;
+  const float c = 1.0f + x2 * (-1.0f / 2 + x2 * (1.0f / 24 + x2 * (-1.0f / 720 + x2 * (1.0f / 40320 +
+                                                                       x2 * (-1.0f / 3628800)))));
+  const float s = x * (1.0f + x2 * (-1.0f / 6 + x2 * (1.0f / 120 + x2 * (-1.0f / 5040 + x2 * (1.0f / 362880)))));
+  return {c, s};
+}
+
+/// A uniform point on the unit disk by Shirley and Chiu's concentric map ("A Low Distortion
+/// Map Between Disk and Square", JGT 1997): squares around the centre become rings, so
+/// stratification survives the warp (a polar map would squeeze the strata near the centre).
+/// The angle is measured from the nearer axis, so that it stays within 45 degrees of it.
+inline Vec2f sample_uniform_disk(Vec2f u) {
+  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
+  if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
+  if (std::fabs(a) > std::fabs(b)) {
+    const Vec2f cs = cos_sin_quarter((kPi / 4.0f) * (b / a));  // from the x axis
+    return {a * cs.x, a * cs.y};
+  }
+  const Vec2f cs = cos_sin_quarter((kPi / 4.0f) * (a / b));  // from the y axis
+  return {b * cs.y, b * cs.x};
+}
+/// The density of sample_uniform_disk on the disk: 1 / pi.
+inline constexpr float pdf_uniform_disk() { return kInvPi; }
+// [ch11-disk]
+
+// [ch11-cosine]
+/// A direction on the upper hemisphere with density cos(theta) / pi, by Malley's method: a
+/// uniform point of the disk lifted onto the hemisphere. The cosine in the density cancels
+/// the cosine of the rendering equation, which is why diffuse surfaces sample this way.
+inline Vec3f sample_cosine_hemisphere(Vec2f u) {
+  const Vec2f d = sample_uniform_disk(u);
+  return {d.x, d.y, safe_sqrt(1.0f - d.x * d.x - d.y * d.y)};
+}
+/// The density of sample_cosine_hemisphere: cos(theta) / pi above the surface, 0 below.
+inline float pdf_cosine_hemisphere(float cos_theta) {
+  return cos_theta > 0.0f ? cos_theta * kInvPi : 0.0f;
+}
+// [ch11-cosine]
+
+/// A uniform direction on the upper hemisphere (z >= 0): z = u.x, phi = 2 pi u.y.
+inline Vec3f sample_uniform_hemisphere(Vec2f u) {
+  const float z = u.x, r = safe_sqrt(1.0f - z * z), phi = 2.0f * kPi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+/// The density of sample_uniform_hemisphere: 1 / (2 pi).
+inline constexpr float pdf_uniform_hemisphere() { return 0.5f * kInvPi; }
+
+/// A uniform direction on the unit sphere: z uniform in [-1, 1] (Archimedes: equal heights
+/// cut equal areas), phi uniform.
+inline Vec3f sample_uniform_sphere(Vec2f u) {
+  const float z = 1.0f - 2.0f * u.x, r = safe_sqrt(1.0f - z * z), phi = 2.0f * kPi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+/// The density of sample_uniform_sphere: 1 / (4 pi).
+inline constexpr float pdf_uniform_sphere() { return 0.25f * kInvPi; }
+
+/// A uniform direction in the cone of directions within angle acos(cos_max) of +z: the
+/// sphere's construction with z restricted to [cos_max, 1].
+inline Vec3f sample_uniform_cone(Vec2f u, float cos_max) {
+  const float z = 1.0f - u.x * (1.0f - cos_max), r = safe_sqrt(1.0f - z * z),
+              phi = 2.0f * kPi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+/// The density of sample_uniform_cone: one over the cone's solid angle 2 pi (1 - cos_max).
+inline float pdf_uniform_cone(float cos_max) { return 1.0f / (2.0f * kPi * (1.0f - cos_max)); }
+
+// [ch11-triangle]
+/// Uniform barycentric coordinates (b0, b1, b2) of a triangle: b0 = 1 - sqrt(u.x) picks the
+/// distance from the first vertex with density growing linearly (the triangle widens), and
+/// u.y splits the remainder. The density is 1 / area on any triangle, 2 on the (b1, b2)
+/// half-square.
+inline Vec3f sample_uniform_triangle(Vec2f u) {
+  const float su = std::sqrt(u.x);
+  const float b1 = su * (1.0f - u.y), b2 = su * u.y;
+  return {1.0f - b1 - b2, b1, b2};
+}
+// [ch11-triangle]
+
+/// Spherical coordinates of a unit direction: theta from +z in [0, pi], phi in [0, 2 pi).
+inline float spherical_theta(Vec3f w) { return std::acos(std::clamp(w.z, -1.0f, 1.0f)); }
+/// The azimuth of a direction in [0, 2 pi), measured from +x toward +y.
+inline float spherical_phi(Vec3f w) {
+  const float p = std::atan2(w.y, w.x);
+  return p < 0.0f ? p + 2.0f * kPi : p;
+}
+
+}  // namespace rtk
