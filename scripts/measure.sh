@@ -248,6 +248,18 @@ section_ch08() { # motion blur: what BVH4MB costs and buys; the motion-blur rend
     | tee "$OUT/ch08_render.txt"
 }
 
+section_ch09() { # rays in flight: 1/2/4/8 rays and prefetching against one ray at a time (real meshes)
+  have_scenes || return 0
+  build ch09_bench
+  RTK_SCENES=$SCENES gbench ch09 "$B/chapters/09_inflight/ch09_bench" --benchmark_filter='^ablation/' \
+    --benchmark_min_time=0.1 --benchmark_counters_tabular=true
+  table ch09 chapters/09_inflight/ch09_ablation.md \
+    python3 chapters/09_inflight/bench_tables.py ablation "$OUT/ch09.json"
+  RTK_SCENES=$SCENES gbench ch09_isa "$B/chapters/09_inflight/ch09_bench" --benchmark_filter='^isa/' \
+    --benchmark_min_time=0.1 --benchmark_counters_tabular=true
+  table ch09 chapters/09_inflight/ch09_isa.md python3 chapters/09_inflight/bench_tables.py isa "$OUT/ch09_isa.json"
+}
+
 section_ch11() { # sampling: the sample patterns figure; the samplers' speed
   build ch11_figure ch11_bench
   "$B/chapters/11_sampling/ch11_figure" chapters/11_sampling/ch11_points.png
@@ -364,7 +376,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure.
-SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch11 ch12 ch13 ch14 ch15 ch16 embree)
+SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch12_gallery
        ch14_convergence ch14_equal_time ch14_path_loop)
 

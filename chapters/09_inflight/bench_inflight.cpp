@@ -1,0 +1,132 @@
+// Chapter 9's benchmark: rays in flight against chapter 3's one ray at a time, on the real
+// meshes and on a closed sphere of 869,880 triangles (the size of the full Stanford dragon, a
+// tree far larger than the caches), BVH8 with triangle8 leaves (the default configuration),
+// primary, diffuse and shadow rays.
+//   RTK_SCENES=../shared/scenes build/chapters/09_inflight/ch09_bench [--benchmark_filter=...]
+// Names: ablation/SCENE/KIND/CONFIG (the best ISA; CONFIG as InflightConfig::name()) and
+// isa/SCENE/KIND/ISA (kDefaultInflight on each ISA). Each alternates, on the same rays and
+// tree, the single-ray kernel and the in-flight one, and reports speedup = time of the
+// single-ray kernel / time in flight (above 1: rays in flight are faster), in the thread's CPU
+// time, so that the ratio survives a shared machine.
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "06_layouts/layout_build.h"
+#include "07_intersectors/layout_intersectors.h"
+#include "09_inflight/inflight.h"
+#include "io/obj_loader.h"
+#include "replay/ray_generator.h"
+#include "testing/scenes.h"
+
+using namespace rtk;
+
+namespace {
+
+constexpr size_t kRays = size_t(1) << 16;
+constexpr RayKind kKinds[] = {RayKind::primary, RayKind::diffuse, RayKind::shadow};
+constexpr TriangleConfig kTri{TriangleLayout::triangle8, IntersectorKind::moeller};
+
+struct Scene {
+  std::string name;
+  std::filesystem::path path;
+  TriangleMesh mesh;
+  std::unique_ptr<LayoutBVH<8>> bvh;
+  std::map<RayKind, std::vector<Ray>> rays;
+};
+
+// Loads the mesh, builds the tree and makes the rays on first use.
+Scene& prepare(Scene& s, RayKind kind) {
+  if (!s.bvh) {
+    s.mesh = s.path.empty() ? test::make_sphere(660, 660) : load_obj(s.path);
+    s.bvh = std::make_unique<LayoutBVH<8>>(build_layout_bvh<8>(s.mesh, kTri.layout));
+  }
+  auto& rays = s.rays[kind];
+  if (rays.empty()) rays = generate_rays(s.mesh, kind, kRays, 1);
+  return s;
+}
+
+double thread_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// [ch09-bench]
+void bm_inflight(benchmark::State& state, Scene* scene, RayKind kind, Isa isa, InflightConfig config) {
+  Scene& s = prepare(*scene, kind);
+  const std::vector<Ray>& rays = s.rays[kind];
+  const bool occlusion = kind == RayKind::shadow;
+  const TraceKernels single = RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri);
+  const TraceKernels inflight = RTK_PICK_ISA(isa, inflight_kernels<8>)(kTri, config);
+  std::vector<Hit> hits(rays.size());
+  std::vector<uint8_t> occ(rays.size());
+  auto run = [&](const TraceKernels& k) {
+    if (occlusion) k.occluded(&s.bvh->bvh, rays, occ);
+    else k.intersect(&s.bvh->bvh, rays, hits);
+    benchmark::DoNotOptimize(hits.data());
+    benchmark::DoNotOptimize(occ.data());
+  };
+  double single_seconds = 0, inflight_seconds = 0;
+  for (auto _ : state) {
+    const double t0 = thread_seconds();
+    run(single);
+    const double t1 = thread_seconds();
+    run(inflight);
+    const double t2 = thread_seconds();
+    single_seconds += t1 - t0;
+    inflight_seconds += t2 - t1;
+    state.SetIterationTime(t2 - t1);
+  }
+  const double n = double(state.iterations()) * double(rays.size());
+  state.counters["mrays_per_s"] = n / inflight_seconds * 1e-6;
+  state.counters["single_mrays_per_s"] = n / single_seconds * 1e-6;
+  state.counters["speedup"] = single_seconds / inflight_seconds;
+  state.counters["triangles"] = double(s.mesh.size());
+  state.counters["tree_mb"] = double(s.bvh->bytes()) * 1e-6;
+}
+// [ch09-bench]
+
+std::vector<std::unique_ptr<Scene>> scenes;
+
+[[maybe_unused]] const bool registered = [] {
+  const char* root = std::getenv("RTK_SCENES");
+  const std::pair<const char*, const char*> real[] = {
+      {"bunny", "bunny_stanford_full/stanford-bunny.obj"}, {"dragon", "dragon_stanford/dragon_vrip_res3.obj"},
+      {"buddha", "happy_buddha_100k/buddha.obj"},         {"sponza", "sponza_dabrovic/sponza.obj"},
+      {"teapot", "teapot_newell/teapot.obj"},
+  };
+  for (const auto& [name, file] : real) {
+    if (!root) break;
+    const std::filesystem::path path = std::filesystem::path(root) / file;
+    if (!std::filesystem::exists(path)) continue;
+    scenes.push_back(std::make_unique<Scene>(Scene{name, path, {}, nullptr, {}}));
+  }
+  scenes.push_back(std::make_unique<Scene>(Scene{"sphere_870k", {}, {}, nullptr, {}}));
+  const Isa best = best_isa();
+  for (auto& owned : scenes) {
+    Scene* s = owned.get();
+    for (RayKind kind : kKinds) {
+      const std::string prefix = s->name + "/" + std::string(ray_kind_name(kind)) + "/";
+      for (const InflightConfig& config : kInflightConfigs)
+        benchmark::RegisterBenchmark(("ablation/" + prefix + config.name()).c_str(), bm_inflight, s, kind, best,
+                                     config)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+      for (Isa isa : supported_isas())
+        benchmark::RegisterBenchmark(("isa/" + prefix + std::string(isa_name(isa))).c_str(), bm_inflight, s, kind,
+                                     isa, kDefaultInflight)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+    }
+  }
+  return true;
+}();
+
+}  // namespace
