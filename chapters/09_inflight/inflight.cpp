@@ -2,6 +2,13 @@
 
 namespace rtk {
 
+std::string InflightConfig::name() const {
+  std::string out = "r";
+  out += std::to_string(rays);
+  if (!prefetch) out += "-noprefetch";
+  return out;
+}
+
 bool inflight_compiled(TriangleConfig tri, InflightConfig config) {
   if (!layout_supports(tri.layout, tri.intersector)) return false;
   if (config == kDefaultInflight) return true;

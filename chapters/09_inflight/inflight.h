@@ -25,7 +25,7 @@ struct InflightConfig {
 
   constexpr bool operator==(const InflightConfig&) const = default;
   /// "r4" or "r4-noprefetch".
-  std::string name() const { return "r" + std::to_string(rays) + (prefetch ? "" : "-noprefetch"); }
+  std::string name() const;
 };
 // [ch09-config]
 
