@@ -317,7 +317,7 @@ section_ch14_equal_time() { # path tracer against Embree 3's pathtracer: samples
   plot chapters/14_pathtracer/figure/equal_time.gp chapters/14_pathtracer/ch14_equal_time
 }
 
-section_ch14_path_loop() { # path tracer: its path loop before and after issue 18's clean-up, against Embree 3's pathtracer
+section_ch14_path_loop() { # path tracer: its path loop before (commit 8bfce20) and after its clean-up, against Embree 3's pathtracer
   build rtk
   command -v pathtracer >/dev/null || { echo "  (no pathtracer: install embree-tools)"; return 0; }
   # The code before: RTK_BEFORE names an rtk built from commit 8bfce20, or it is built here

@@ -27,13 +27,17 @@ BsdfModel model(int which) {
       return ThinDielectric{1.5f, Color(0.9f), 0.1f};
     case 5:
       return Plastic{Color(0.5f), 1.5f, GgxDistribution{0.0f}};
-    default:
+    case 6:
       return Plastic{Color(0.5f), 1.5f, GgxDistribution{0.2f}};
+    case 7:
+      return Velvet{};
+    default:
+      return MetallicPaint{Color(0.5f, 0.1f, 0.1f), Color(0.3f), 1.45f, GgxDistribution{0.2f}};
   }
 }
 const char* kNames[] = {"Lambertian",       "SmoothConductor", "RoughConductor a=0.2",
                         "SmoothDielectric", "ThinDielectric",  "Plastic smooth",
-                        "Plastic a=0.2"};
+                        "Plastic a=0.2",    "Velvet",          "MetallicPaint glitter a=0.2"};
 
 void BM_bsdf_sample(benchmark::State& state) {
   const Bsdf bsdf(Frame(normalize(Vec3f{0.1f, 0.9f, 0.2f})),
@@ -55,6 +59,6 @@ void BM_bsdf_sample(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   state.SetLabel(kNames[state.range(0)]);
 }
-BENCHMARK(BM_bsdf_sample)->DenseRange(0, 6);
+BENCHMARK(BM_bsdf_sample)->DenseRange(0, 8);
 
 }  // namespace

@@ -1,5 +1,5 @@
 """Chapter 12's table of costs, from `ch12_bench` JSON: CPU time per Bsdf::sample call of
-each model (BM_bsdf_sample/0..6, in the order of bench_bsdf.cpp's models).
+each model (BM_bsdf_sample/0..8, in the order of bench_bsdf.cpp's models).
 
     python3 bench_table.py ch12.json   # Markdown table on standard output"""
 import json
@@ -7,7 +7,7 @@ import sys
 
 LABELS = ["Lambertian", "SmoothConductor (three Fresnel evaluations, one per channel)",
           "RoughConductor, alpha = 0.2", "SmoothDielectric", "ThinDielectric", "Plastic, smooth coat",
-          "Plastic, alpha = 0.2"]
+          "Plastic, alpha = 0.2", "Velvet", "MetallicPaint, glitter 0.3, alpha = 0.2"]
 
 
 def main():
