@@ -33,6 +33,12 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
   return a / (a + b);
 }
 
+/// What the path loop asks of a material at every hit, found once per material: whether its
+/// BSDF is delta-only or transmissive, and which of the sampler's numbers its sampling reads.
+struct MaterialTraits {
+  bool delta_only = false, transmissive = false, reads_lobe = true, reads_direction = true;
+};
+
 /// The path tracer of chapter 14 over one scene. Immutable after construction, so tiles may
 /// be rendered on many threads at once; each call keeps its own path state.
 class PathTracer {
@@ -64,11 +70,7 @@ class PathTracer {
   std::vector<const TriangleLight*> triangle_lights_;  // per light: itself if a triangle light
   std::vector<uint8_t> light_is_delta_;                // per light: whether it is a delta light
   std::vector<uint32_t> infinite_lights_;              // the lights that rays escaping can see
-  /// What the path loop asks of a material at every hit, found once per material.
-  struct MaterialTraits {
-    bool delta_only = false, transmissive = false, reads_lobe = true, reads_direction = true;
-  };
-  std::vector<MaterialTraits> material_traits_;
+  std::vector<MaterialTraits> material_traits_;  // per material, found once
   std::vector<Vec3f> face_normals_;  // per triangle: the unit geometric normal (static scenes)
   bool uses_lens_ = false;           // whether camera rays need a lens sample (a thin lens)
   bool transparency_ = false;  // whether shadow rays may pass through surfaces
