@@ -10,19 +10,10 @@ namespace rtk::RTK_ISA {
 // [ch06-kernels]
 template <int N>
 TraceKernels layout_kernels(TriangleLayout layout) {
-  // One traversal instantiation per layout: the precomputed blocks give Möller-Trumbore its
-  // edges and normal, the others their vertices.
-  using M = MoellerTrumbore;
-  switch (layout) {
-    case TriangleLayout::triangle1: return layout_batch_kernels<N, LeafIntersector<Triangle1Layout, M, true>>();
-    case TriangleLayout::triangle4: return layout_batch_kernels<N, LeafIntersector<Triangle4Layout, M, true>>();
-    case TriangleLayout::triangle8: return layout_batch_kernels<N, LeafIntersector<Triangle8Layout, M, true>>();
-    case TriangleLayout::triangle1i: return layout_batch_kernels<N, LeafIntersector<Triangle1iLayout, M>>();
-    case TriangleLayout::triangle4i: return layout_batch_kernels<N, LeafIntersector<Triangle4iLayout, M>>();
-    case TriangleLayout::triangle1v: return layout_batch_kernels<N, LeafIntersector<Triangle1vLayout, M>>();
-    case TriangleLayout::triangle4v: return layout_batch_kernels<N, LeafIntersector<Triangle4vLayout, M>>();
-  }
-  return {};
+  // One traversal instantiation per layout, with that layout's leaf policy.
+  return with_moeller_leaf(layout, [](auto leaf) {
+    return layout_batch_kernels<N, typename decltype(leaf)::type>();
+  });
 }
 // [ch06-kernels]
 

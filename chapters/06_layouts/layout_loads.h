@@ -9,12 +9,14 @@
 #endif
 
 #include <cstdint>
+#include <type_traits>
 
 #include "01_base/platform.h"
 #include "01_base/ray.h"
 #include "01_base/simd.h"
 #include "02_bvh2/leaf_intersector.h"
 #include "06_layouts/triangle_i.h"
+#include "06_layouts/triangle_layout.h"
 #include "06_layouts/triangle_m.h"
 #include "06_layouts/triangle_v.h"
 
@@ -57,5 +59,27 @@ RTK_INLINE void load_vertices(const TriangleMi<M>& b, Vec3v<M>& p0, Vec3v<M>& p1
   }
 }
 // [ch06-load-blocks]
+
+// [ch06-moeller-leaf]
+/// Calls make(std::type_identity<Leaf>{}) with the leaf policy that reads `layout` with
+/// Möller-Trumbore, and returns what it returns: the precomputed blocks give the test its edges
+/// and normal, the others their vertices. The one list of layouts that every per-layout
+/// instantiation (a traversal, a kernel of a later chapter) is made from.
+template <class Make>
+auto with_moeller_leaf(TriangleLayout layout, Make&& make)
+    -> decltype(make(std::type_identity<LeafIntersector<Triangle1Layout, MoellerTrumbore, true>>{})) {
+  using M = MoellerTrumbore;
+  switch (layout) {
+    case TriangleLayout::triangle1: return make(std::type_identity<LeafIntersector<Triangle1Layout, M, true>>{});
+    case TriangleLayout::triangle4: return make(std::type_identity<LeafIntersector<Triangle4Layout, M, true>>{});
+    case TriangleLayout::triangle8: return make(std::type_identity<LeafIntersector<Triangle8Layout, M, true>>{});
+    case TriangleLayout::triangle1i: return make(std::type_identity<LeafIntersector<Triangle1iLayout, M>>{});
+    case TriangleLayout::triangle4i: return make(std::type_identity<LeafIntersector<Triangle4iLayout, M>>{});
+    case TriangleLayout::triangle1v: return make(std::type_identity<LeafIntersector<Triangle1vLayout, M>>{});
+    case TriangleLayout::triangle4v: return make(std::type_identity<LeafIntersector<Triangle4vLayout, M>>{});
+  }
+  return {};
+}
+// [ch06-moeller-leaf]
 
 }  // namespace rtk::RTK_ISA
