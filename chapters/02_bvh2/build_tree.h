@@ -123,13 +123,15 @@ std::vector<uint32_t> depth_first_order(const BuildTree<N>& tree) {
 /// The surface area heuristic cost of a tree (MacDonald and Booth, "Heuristics for ray tracing
 /// using space subdivision", 1990): the expected cost of a random ray that hits the root box,
 /// sum over inner nodes of area/root_area * traversal_cost plus over leaves of
-/// area/root_area * count * intersection_cost.
+/// area/root_area * count * intersection_cost. Leaves whose primitives are tested `leaf_block`
+/// at a time (chapter 6's blocks) count ceil(count / leaf_block) tests instead of count.
 template <int N>
-double sah_cost(const BuildTree<N>& tree, double traversal_cost = 1.0, double intersection_cost = 1.0);
+double sah_cost(const BuildTree<N>& tree, double traversal_cost = 1.0, double intersection_cost = 1.0,
+                int leaf_block = 1);
 
-extern template double sah_cost<2>(const BuildTree<2>&, double, double);
-extern template double sah_cost<4>(const BuildTree<4>&, double, double);
-extern template double sah_cost<8>(const BuildTree<8>&, double, double);
-extern template double sah_cost<16>(const BuildTree<16>&, double, double);
+extern template double sah_cost<2>(const BuildTree<2>&, double, double, int);
+extern template double sah_cost<4>(const BuildTree<4>&, double, double, int);
+extern template double sah_cost<8>(const BuildTree<8>&, double, double, int);
+extern template double sah_cost<16>(const BuildTree<16>&, double, double, int);
 
 }  // namespace rtk

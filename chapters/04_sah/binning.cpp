@@ -1,5 +1,6 @@
 #include "04_sah/binning.h"
 
+#include <bit>
 #include <cmath>
 
 namespace rtk::sah {
@@ -48,7 +49,7 @@ uint32_t bin_count(const Bins& bins, int axis, int first, int last) {
 }
 
 // [ch04-sweep]
-Split find_best_split(const Bins& bins, const BinMapping& map) {
+Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   const int n = bins.num_bins;
   constexpr float inf = std::numeric_limits<float>::infinity();
   const Lanes4 pos_inf{inf, inf, inf, inf}, neg_inf = -pos_inf;
@@ -91,6 +92,12 @@ Split find_best_split(const Bins& bins, const BinMapping& map) {
     return c;
   };
   const Counts4 none{0, 0, 0, 0};
+  // A side of c primitives costs ceil(c / leaf_block) tests: (c + leaf_block - 1) >> shift.
+  const int shift = std::countr_zero(unsigned(leaf_block));
+  const Counts4 round_up = none + uint32_t(leaf_block - 1);
+  auto tests = [&](Counts4 c) {
+    return __builtin_convertvector(reinterpret_cast<Ints4>((c + round_up) >> shift), Lanes4);
+  };
   // Sweep from the right: right_cost[i] prices bins [i, n) of each axis as one child, area
   // times count (infinite where no primitive is there).
   Lanes4 right_cost[kMaxSahBins];
@@ -100,7 +107,7 @@ Split find_best_split(const Bins& bins, const BinMapping& map) {
     for (int i = n - 1; i > 0; --i) {
       for (int a = 0; a < 3; ++a) l[a] = min4(l[a], bins.bin[a][i].lower), u[a] = max4(u[a], bins.bin[a][i].upper);
       c += counts(i);
-      const Lanes4 cost = areas(l, u) * __builtin_convertvector(reinterpret_cast<Ints4>(c), Lanes4);
+      const Lanes4 cost = areas(l, u) * tests(c);
       right_cost[i] = c == none ? pos_inf : cost;
     }
   }
@@ -114,7 +121,7 @@ Split find_best_split(const Bins& bins, const BinMapping& map) {
       for (int a = 0; a < 3; ++a)
         l[a] = min4(l[a], bins.bin[a][i - 1].lower), u[a] = max4(u[a], bins.bin[a][i - 1].upper);
       c += counts(i - 1);
-      const Lanes4 total = areas(l, u) * __builtin_convertvector(reinterpret_cast<Ints4>(c), Lanes4) + right_cost[i];
+      const Lanes4 total = areas(l, u) * tests(c) + right_cost[i];
       cost[i] = c == none ? pos_inf : total;
     }
   }
@@ -132,8 +139,9 @@ Split find_best_split(const Bins& bins, const BinMapping& map) {
     best.left_centroids = bin_centroid_bounds(bins, best.axis, 0, best.pos);
     best.right_centroids = bin_centroid_bounds(bins, best.axis, best.pos, n);
     // The chosen split's price in double precision, as the leaf test compares it.
-    best.cost = half_area(best.left_bounds) * best.left_count +
-                half_area(best.right_bounds) * bin_count(bins, best.axis, best.pos, n);
+    best.cost = half_area(best.left_bounds) * leaf_tests(best.left_count, leaf_block) +
+                half_area(best.right_bounds) *
+                    leaf_tests(bin_count(bins, best.axis, best.pos, n), leaf_block);
   }
   return best;
 }

@@ -179,8 +179,9 @@ uint32_t bin_count(const Bins& bins, int axis, int first, int last);
 struct Split {
   int axis = -1;  ///< -1: binning found no border with primitives on both sides
   int pos = 0;
-  /// The split's intersection term, area(left) * count(left) + area(right) * count(right), in
-  /// half areas (multiply by the intersection cost for the SAH).
+  /// The split's intersection term, area(left) * tests(left) + area(right) * tests(right), in
+  /// half areas (multiply by the intersection cost for the SAH); a side's tests are its count,
+  /// or its blocks when leaves test several primitives at once (SahBuildOptions::leaf_block).
   double cost = std::numeric_limits<double>::infinity();
   uint32_t left_count = 0;
   Box3f left_bounds, right_bounds;        ///< the children's boxes
@@ -190,7 +191,8 @@ struct Split {
 };
 
 /// Prices every bin border on every splittable axis and returns the cheapest, the first one
-/// (lowest axis, then lowest border) among equals, so that the choice is reproducible.
-Split find_best_split(const Bins& bins, const BinMapping& map);
+/// (lowest axis, then lowest border) among equals, so that the choice is reproducible. Each
+/// side is priced by its area times leaf_tests(count, leaf_block).
+Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block = 1);
 
 }  // namespace rtk::sah

@@ -313,6 +313,8 @@ void check_sah_options(const SahBuildOptions& o, const std::string& who) {
     fail("bins must be in [2, " + std::to_string(kMaxSahBins) + "], got " + std::to_string(o.bins));
   if (o.max_leaf_size < 1)
     fail("max_leaf_size must be at least 1, got " + std::to_string(o.max_leaf_size));
+  if (o.leaf_block < 1 || o.leaf_block > 16 || (o.leaf_block & (o.leaf_block - 1)) != 0)
+    fail("leaf_block must be 1, 2, 4, 8 or 16, got " + std::to_string(o.leaf_block));
   if (!std::isfinite(o.traversal_cost) || o.traversal_cost < 0.0f)
     fail("traversal_cost must be finite and not negative");
   if (!std::isfinite(o.intersection_cost) || o.intersection_cost <= 0.0f)

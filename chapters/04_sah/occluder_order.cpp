@@ -10,7 +10,7 @@ namespace rtk::sah {
 OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const SahBuildOptions& options) {
   OccluderSummary s;
   for (uint32_t i = 0; i < count; ++i) s.surface += 0.5 * half_area(refs[i].box());
-  s.cost = double(options.intersection_cost) * count;
+  s.cost = double(options.intersection_cost) * leaf_tests(count, options.leaf_block);
   return s;
 }
 

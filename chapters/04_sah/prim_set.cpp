@@ -12,7 +12,7 @@ namespace rtk::sah {
 void evaluate(PrimSet& set, const Bins& bins, const BinMapping& map,
               const SahBuildOptions& options) {
   const uint32_t n = set.size();
-  set.split = n > 1 ? find_best_split(bins, map) : Split{};
+  set.split = n > 1 ? find_best_split(bins, map, options.leaf_block) : Split{};
   const double area = half_area(set.bounds);
   if (n <= 1) {
     set.wants_split = false;
@@ -21,11 +21,19 @@ void evaluate(PrimSet& set, const Bins& bins, const BinMapping& map,
     set.wants_split = n > uint32_t(options.max_leaf_size);
     set.gain = -std::numeric_limits<double>::infinity();
   } else {
-    const double leaf = double(options.intersection_cost) * area * n;
+    const double tests = leaf_tests(n, options.leaf_block);
+    const double leaf = double(options.intersection_cost) * area * tests;
     const double split =
         double(options.traversal_cost) * area + double(options.intersection_cost) * set.split.cost;
     set.wants_split = n > uint32_t(options.max_leaf_size) || split < leaf;
-    set.gain = area * n - set.split.cost;
+    set.gain = area * tests - set.split.cost;
+    // A split made only to fill a free slot of the parent's node costs no traversal step, and
+    // the SAH sees a gain wherever the halves' boxes are smaller. But where the halves need
+    // more blocks than the set, the slot is free and the block is not: four triangles in a
+    // block of eight. Such a split fills a slot only if it gains a large share.
+    if (split_adds_blocks(n, set.split.left_count, n - set.split.left_count, options.leaf_block) &&
+        !(set.gain > kBlockFillGain * area * tests))
+      set.gain = -std::numeric_limits<double>::infinity();
   }
 }
 // [ch04-leaf-test]

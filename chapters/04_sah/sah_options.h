@@ -72,6 +72,11 @@ struct SahBuildOptions {
   /// node step: of the prices the chapter measured (1, 0.5, 0.25), trees built with this one
   /// traced fastest through chapter 3's BVH4 kernels.
   float intersection_cost = 0.5f;
+  /// How many primitives a leaf tests at once: 1, 2, 4, 8 or 16. Chapter 6's layouts store a
+  /// leaf's triangles in blocks of 4 or 8 that are tested together, so a leaf of n primitives
+  /// costs ceil(n / leaf_block) tests, and `intersection_cost` is then the price of one block.
+  /// With 1, a leaf costs n tests, the SAH of MacDonald and Booth.
+  int leaf_block = 1;
   /// Improve small subtrees with Kensler's tree rotations (2008).
   bool rotations = true;
   /// How each node's children are ordered for occlusion rays.
@@ -80,6 +85,27 @@ struct SahBuildOptions {
   /// n > 0: run in a private arena of n threads. The tree is the same either way.
   int threads = 0;
 };
+
+/// The number of tests a leaf of `n` primitives costs when they are tested `leaf_block` at a
+/// time (a power of two): ceil(n / leaf_block).
+inline uint32_t leaf_tests(uint32_t n, int leaf_block) {
+  return uint32_t((uint64_t(n) + uint64_t(leaf_block) - 1) / uint64_t(leaf_block));
+}
+
+/// Whether cutting a set of `n` primitives into `left` and `right` makes its leaves take more
+/// blocks of `leaf_block` (above 1) than the set takes as one leaf: ceil(left / leaf_block) +
+/// ceil(right / leaf_block) > ceil(n / leaf_block). With leaf_block 1 there are no blocks, and
+/// no lanes to leave empty.
+inline bool split_adds_blocks(uint32_t n, uint32_t left, uint32_t right, int leaf_block) {
+  return leaf_block > 1 &&
+         leaf_tests(left, leaf_block) + leaf_tests(right, leaf_block) > leaf_tests(n, leaf_block);
+}
+
+/// A split whose halves take more blocks than their set (split_adds_blocks) fills a free slot
+/// of a node only if it lowers the set's intersection term by more than this share. With 0,
+/// BVH8 trees with triangle8 leaves took a quarter less memory, but one mesh's shadow rays
+/// slowed by a third; with a quarter, nearly the same memory without that loss (chapter 4).
+inline constexpr double kBlockFillGain = 0.25;
 
 /// What a build did. Every count is a property of the input and the options alone, never of
 /// the thread schedule, so that two builds of one scene report the same figures.
@@ -96,7 +122,7 @@ struct SahBuildStats {
 };
 
 /// Throws std::invalid_argument, naming `who` and the option, unless the options are usable:
-/// 2 to kMaxSahBins bins, a leaf size of at least 1, finite costs (intersection above zero),
+/// 2 to kMaxSahBins bins, a leaf size of at least 1, a leaf block of 1, 2, 4, 8 or 16, finite costs (intersection above zero),
 /// a thread count of 0 or more. Chapter 5's builder checks its SAH part with it too.
 void check_sah_options(const SahBuildOptions& options, const std::string& who);
 

@@ -45,9 +45,9 @@ size_t count_leaves(const BuildTree<N>& tree) {
 }
 
 template <int N>
-void check_sah(const BuildTree<N>& tree, double ct, double ci) {
-  const double reported = sah_cost(tree, ct, ci);
-  const double recomputed = test::recursive_sah(tree, ct, ci);
+void check_sah(const BuildTree<N>& tree, double ct, double ci, int leaf_block = 1) {
+  const double reported = sah_cost(tree, ct, ci, leaf_block);
+  const double recomputed = test::recursive_sah(tree, ct, ci, leaf_block);
   CHECK(reported == doctest::Approx(recomputed).epsilon(1e-9));
 }
 
@@ -89,6 +89,71 @@ TEST_CASE("ch04: the SAH of the tree is priced with the costs it was built for")
   // A dearer traversal makes fuller leaves: fewer nodes than with the default costs.
   const BuildTree<4> cheap = build_binned_sah<4>(refs);
   CHECK(tree.nodes.size() < cheap.nodes.size());
+}
+
+TEST_CASE("ch04: leaves priced in blocks fill their blocks") {
+  // Chapter 6's leaves hold triangles in blocks of eight. Priced by count at an eighth of a
+  // block, the SAH sees no difference between a leaf of eight and one of nine, which takes two
+  // blocks; priced in blocks, it makes leaves that waste fewer of their lanes.
+  for (const auto& scene : scenes()) {
+    CAPTURE(scene.name);
+    const std::vector<PrimRef> refs = make_prim_refs(scene.mesh);
+    SahBuildOptions by_count;
+    by_count.intersection_cost = 1.0f / 8.0f;
+    by_count.max_leaf_size = 16;
+    SahBuildOptions by_block = by_count;
+    by_block.intersection_cost = 1.0f;
+    by_block.leaf_block = 8;
+    const BuildTree<8> a = build_binned_sah<8>(refs, by_count);
+    const BuildTree<8> b = build_binned_sah<8>(refs, by_block);
+    CHECK(test::check_tree(b, refs, by_block.max_leaf_size) == "");
+    check_sah(b, 1.0, 1.0, 8);
+    auto lanes = [](const BuildTree<8>& t) {
+      size_t used = 0;
+      if (t.root.is_leaf()) return size_t(leaf_tests(t.root.leaf_count, 8) * 8);
+      for (const auto& node : t.nodes)
+        for (int i = 0; i < node.num_children; ++i)
+          if (node.children[i].is_leaf()) used += leaf_tests(node.children[i].leaf_count, 8) * 8;
+      return used;
+    };
+    const double prims = double(a.prim_ids.size());
+    MESSAGE(scene.name << ": lanes filled " << prims / double(lanes(a)) << " by count, "
+                       << prims / double(lanes(b)) << " in blocks");
+    CHECK(lanes(b) < lanes(a));
+  }
+}
+
+TEST_CASE("ch04: a split that takes more blocks fills a slot only if it gains a large share") {
+  // Three clusters far apart, each of two groups of four unit cubes, the groups' boxes one
+  // unit apart. The root holds more than a leaf may, so it becomes a node, and its free slots
+  // invite splitting each cluster into its groups: that shrinks the intersection term (3 + 3
+  // half areas against the cluster's 7), and it is what pricing by count does. In blocks of
+  // eight it would double the blocks the cluster needs for a gain of 1/7, below
+  // kBlockFillGain, and the builder keeps each cluster as one leaf of one block.
+  static_assert(kBlockFillGain > 1.0 / 7.0);
+  std::vector<PrimRef> refs;
+  for (float c : {0.0f, 1000.0f, 2000.0f})
+    for (float offset : {0.0f, 2.0f})
+      for (int i = 0; i < 4; ++i)
+        refs.push_back(ref({c + offset, 0, 0}, {c + offset + 1, 1, 1}, uint32_t(refs.size())));
+  SahBuildOptions by_count;
+  by_count.max_leaf_size = 16;
+  by_count.intersection_cost = 1.0f / 8.0f;
+  SahBuildOptions by_block = by_count;
+  by_block.intersection_cost = 1.0f;
+  by_block.leaf_block = 8;
+  auto leaf_sizes = [](const BuildTree<8>& t) {
+    std::vector<uint32_t> sizes;
+    for (const auto& node : t.nodes)
+      for (int i = 0; i < node.num_children; ++i)
+        if (node.children[i].is_leaf()) sizes.push_back(node.children[i].leaf_count);
+    return sizes;
+  };
+  const BuildTree<8> counted = build_binned_sah<8>(refs, by_count);
+  const BuildTree<8> blocked = build_binned_sah<8>(refs, by_block);
+  CHECK(test::check_tree(blocked, refs, 16) == "");
+  CHECK(leaf_sizes(counted) == std::vector<uint32_t>(6, 4));
+  CHECK(leaf_sizes(blocked) == std::vector<uint32_t>(3, 8));
 }
 
 TEST_CASE("ch04: a scene large enough for all three granularities") {
@@ -250,6 +315,11 @@ TEST_CASE("ch04: invalid options are refused with the option's name") {
   o = {};
   o.max_leaf_size = 0;
   CHECK(refused(o, "max_leaf_size"));
+  o = {};
+  for (const int block : {0, 3, 32, -4}) {
+    o.leaf_block = block;
+    CHECK(refused(o, "leaf_block"));
+  }
   o = {};
   o.traversal_cost = -1.0f;
   CHECK(refused(o, "traversal_cost"));

@@ -129,15 +129,17 @@ std::string check_tree(const BuildTree<N>& tree, std::span<const PrimRef> refs, 
 
 /// The SAH cost recomputed recursively, as the expected cost of a ray that enters the root
 /// box: cost(node) = Ct + sum over children of area(child) / area(node) * cost(child), and
-/// Ci * count for a leaf. (sah_cost() sums over boxes instead; the two must agree.)
+/// Ci * count for a leaf, or Ci * ceil(count / leaf_block) when its primitives are tested in
+/// blocks. (sah_cost() sums over boxes instead; the two must agree.)
 template <int N>
-double recursive_sah(const BuildTree<N>& tree, double ct, double ci) {
+double recursive_sah(const BuildTree<N>& tree, double ct, double ci, int leaf_block = 1) {
   if (tree.empty()) return 0.0;
   struct R {
     const BuildTree<N>& t;
     double ct, ci;
+    int block;
     double cost(const typename BuildTree<N>::Child& c) const {
-      if (c.is_leaf()) return ci * c.leaf_count;
+      if (c.is_leaf()) return ci * std::ceil(double(c.leaf_count) / block);
       const auto& node = t.nodes[c.index];
       const double area = c.box.half_area();
       double sum = ct;
@@ -145,7 +147,7 @@ double recursive_sah(const BuildTree<N>& tree, double ct, double ci) {
         sum += (area > 0 ? node.children[i].box.half_area() / area : 1.0) * cost(node.children[i]);
       return sum;
     }
-  } r{tree, ct, ci};
+  } r{tree, ct, ci, leaf_block};
   return r.cost(tree.root);
 }
 

@@ -111,15 +111,16 @@ class Builder {
         sah::parallel_bin_prims(s.refs.data(), n, s.map, *bins);
       else
         sah::bin_prims(s.refs.data(), n, s.map, *bins);
-      s.object = sah::find_best_split(*bins, s.map);
+      s.object = sah::find_best_split(*bins, s.map, sah_.leaf_block);
       const double overlap = s.object.valid()
                                  ? half_area(intersection(s.object.left_bounds, s.object.right_bounds))
                                  : std::numeric_limits<double>::infinity();
       s.spatial_tried = spatial_on_ && s.budget > 0;
       if (s.spatial_tried && overlap > kSpatialAlpha * root_area_)
         s.planes = options_.mode == SpatialSplitMode::centre
-                       ? find_centre_splits(s.refs, s.bounds, mesh_)
-                       : find_binned_splits(s.refs, s.bounds, mesh_, options_.spatial_bins);
+                       ? find_centre_splits(s.refs, s.bounds, mesh_, sah_.leaf_block)
+                       : find_binned_splits(s.refs, s.bounds, mesh_, options_.spatial_bins,
+                                            sah_.leaf_block);
     }
     choose(s);
   }
@@ -137,10 +138,16 @@ class Builder {
       s.wants_split = n > uint32_t(sah_.max_leaf_size);
       s.gain = -std::numeric_limits<double>::infinity();
     } else {
-      const double leaf = double(sah_.intersection_cost) * area * n;
+      const double tests = leaf_tests(n, sah_.leaf_block);
+      const double leaf = double(sah_.intersection_cost) * area * tests;
       const double split = double(sah_.traversal_cost) * area + double(sah_.intersection_cost) * s.split_cost();
       s.wants_split = n > uint32_t(sah_.max_leaf_size) || split < leaf;
-      s.gain = area * n - s.split_cost();
+      s.gain = area * tests - s.split_cost();
+      // As in chapter 4: no split only to fill a free slot where the halves take more blocks.
+      const uint32_t left = s.use_spatial ? s.spatial.left_count : s.object.left_count;
+      const uint32_t right = s.use_spatial ? s.spatial.right_count : n - s.object.left_count;
+      if (split_adds_blocks(n, left, right, sah_.leaf_block) && !(s.gain > kBlockFillGain * area * tests))
+        s.gain = -std::numeric_limits<double>::infinity();
     }
   }
   // [ch05-evaluate]

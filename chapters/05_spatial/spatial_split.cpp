@@ -147,10 +147,11 @@ void price_plane(const PrimRef* refs, size_t first, size_t last, int axis, float
 }
 
 void consider(std::vector<SpatialSplit>& planes, int axis, float pos, const Box3f& left,
-              uint32_t nl, const Box3f& right, uint32_t nr) {
+              uint32_t nl, const Box3f& right, uint32_t nr, int leaf_block) {
   if (nl == 0 || nr == 0) return;
   SpatialSplit s;
-  s.axis = axis, s.pos = pos, s.cost = half_area(left) * nl + half_area(right) * nr;
+  s.axis = axis, s.pos = pos;
+  s.cost = half_area(left) * leaf_tests(nl, leaf_block) + half_area(right) * leaf_tests(nr, leaf_block);
   s.left_count = nl, s.right_count = nr;
   s.left_bounds = left, s.right_bounds = right;
   planes.push_back(s);
@@ -160,7 +161,7 @@ void consider(std::vector<SpatialSplit>& planes, int axis, float pos, const Box3
 
 // [ch05-centre-split]
 std::vector<SpatialSplit> find_centre_splits(std::span<const PrimRef> refs, const Box3f& bounds,
-                                             const TriangleMesh& mesh) {
+                                             const TriangleMesh& mesh, int leaf_block) {
   std::vector<SpatialSplit> best;
   for (int axis = 0; axis < 3; ++axis) {
     const float pos = float(0.5 * double(bounds.lower[axis]) + 0.5 * double(bounds.upper[axis]));
@@ -170,7 +171,8 @@ std::vector<SpatialSplit> find_centre_splits(std::span<const PrimRef> refs, cons
       price_plane(refs.data(), first, last, axis, pos, mesh, parts[b]);
     });
     for (size_t b = 1; b < parts.size(); ++b) parts[0].merge(parts[b]);
-    consider(best, axis, pos, parts[0].left, parts[0].left_count, parts[0].right, parts[0].right_count);
+    consider(best, axis, pos, parts[0].left, parts[0].left_count, parts[0].right, parts[0].right_count,
+             leaf_block);
   }
   return best;
 }
@@ -178,7 +180,7 @@ std::vector<SpatialSplit> find_centre_splits(std::span<const PrimRef> refs, cons
 
 // [ch05-binned-sweep]
 std::vector<SpatialSplit> find_binned_splits(std::span<const PrimRef> refs, const Box3f& bounds,
-                                             const TriangleMesh& mesh, int bins) {
+                                             const TriangleMesh& mesh, int bins, int leaf_block) {
   bins = std::clamp(bins, 2, kMaxSpatialBins);
   const std::array<Slabs, 3> slabs = {Slabs(bounds, 0, bins), Slabs(bounds, 1, bins),
                                       Slabs(bounds, 2, bins)};
@@ -209,7 +211,7 @@ std::vector<SpatialSplit> find_binned_splits(std::span<const PrimRef> refs, cons
       const float pos = slabs[axis].plane(i);
       if (!(bounds.lower[axis] < pos && pos < bounds.upper[axis])) continue;
       consider(best, axis, pos, intersection(l, bounds), nl, intersection(right_bounds[i], bounds),
-               right_count[i]);
+               right_count[i], leaf_block);
     }
   }
   return best;

@@ -19,7 +19,8 @@ namespace rtk::spatial {
 struct SpatialSplit {
   int axis = -1;  ///< -1: no plane separates anything
   float pos = 0.0f;
-  /// The SAH intersection term, half_area(left) * left_count + half_area(right) * right_count.
+  /// The SAH intersection term, half_area(left) * tests(left) + half_area(right) * tests(right),
+  /// a side's tests being leaf_tests(count, leaf_block) (chapter 4).
   double cost = std::numeric_limits<double>::infinity();
   uint32_t left_count = 0, right_count = 0;  ///< straddling references count on both sides
   Box3f left_bounds, right_bounds;           ///< the clipped references' bounds on each side
@@ -31,16 +32,18 @@ struct SpatialSplit {
 
 /// The guide's spatial split: on each axis the plane through the centre of `bounds` (the
 /// references' box), priced by clipping every straddling reference. Returns every plane that
-/// leaves references on both sides (at most three), axis by axis.
+/// leaves references on both sides (at most three), axis by axis. A side is priced by its area
+/// times its leaf tests in blocks of `leaf_block`, like chapter 4's object splits.
 std::vector<SpatialSplit> find_centre_splits(std::span<const PrimRef> refs, const Box3f& bounds,
-                                             const TriangleMesh& mesh);
+                                             const TriangleMesh& mesh, int leaf_block = 1);
 
 /// SBVH's binned spatial split: `bins` equal slabs per axis over `bounds`, every reference
 /// chopped exactly into the slabs it spans, entry and exit counters per slab, and a sweep over
 /// the planes between slabs. Returns every plane that leaves references on both sides, axis by
-/// axis and left to right.
+/// axis and left to right, priced as find_centre_splits() prices them.
 std::vector<SpatialSplit> find_binned_splits(std::span<const PrimRef> refs, const Box3f& bounds,
-                                             const TriangleMesh& mesh, int bins);
+                                             const TriangleMesh& mesh, int bins,
+                                             int leaf_block = 1);
 
 /// The cheapest of `planes` (the first among equals) that adds at most `budget` references to a
 /// set of `n`, or an invalid split.

@@ -11,7 +11,8 @@ SahBuildOptions sah_options_for(TriangleLayout layout) {
                         ? 4
                         : 1;
   SahBuildOptions options;
-  options.intersection_cost = 1.0f / float(width);
+  options.leaf_block = width;
+  options.intersection_cost = 1.0f;
   options.max_leaf_size = width == 1 ? 8 : 2 * width;
   return options;
 }

@@ -12,8 +12,9 @@ namespace rtk {
 /// SAH options that fill a layout's blocks. Chapter 4's builder prices a leaf by its
 /// triangles, but a block of M triangles is tested in about the time of one: left alone it
 /// makes leaves of one or two triangles, which blocks of four hold mostly as padding (on a
-/// sphere of 16,256 triangles, 199 bytes per triangle for triangle4 against 77 with these
-/// options). So a triangle is priced at 1/M of a test, and leaves may hold two blocks.
+/// sphere of 16,256 triangles, 199 bytes per triangle for triangle4). So leaves are priced in
+/// blocks of M (chapter 4's leaf_block), a block at the price of a node step, and a leaf may
+/// hold two blocks.
 SahBuildOptions sah_options_for(TriangleLayout layout);
 // [ch06-sah-options]
 

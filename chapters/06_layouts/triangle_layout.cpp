@@ -47,21 +47,23 @@ size_t leaf_bytes_per_triangle(TriangleLayout layout) {
 // [ch06-estimate]
 double estimated_bytes_per_triangle(TriangleLayout layout, int width) {
   // Measured with sah_options_for(layout) on the closed procedural meshes (spheres of 16,128
-  // and 130,560 triangles, terrains of 20,000 and 131,072; the largest value, rounded up): leaf
-  // blocks with their padding, the nodes, and for the indexed layouts the shared vertices (12
-  // bytes each, about half a vertex per triangle). Eight children cost more nodes' padding
-  // above small leaves than four. A triangle soup, with three vertices of its own per triangle,
-  // costs the indexed layouts some 35 bytes more. Two children leave no slot empty: BVH2 measured
-  // a few bytes below BVH4 with every layout, so it shares BVH4's figures.
+  // and 130,560 triangles, a terrain of 131,072; the largest value, rounded up): leaf blocks
+  // with their padding, the nodes, and for the indexed layouts the shared vertices (12 bytes
+  // each, about half a vertex per triangle). With one triangle per leaf test, eight children
+  // cost more nodes' padding above small leaves than four; the blocks, priced as blocks, fill
+  // BVH8 nodes as well as BVH4 nodes. A triangle soup costs more: the indexed layouts, with
+  // three vertices of its own per triangle, some 35 bytes, and triangle8 in a BVH8, whose
+  // scattered triangles gain from smaller leaves, some 35. Two children leave no slot empty:
+  // BVH2 measured at or below BVH4 with every layout, so it shares BVH4's figures.
   const bool wide = width > 4;
   switch (layout) {
     case TriangleLayout::triangle1: return wide ? 107 : 85;
-    case TriangleLayout::triangle4: return wide ? 85 : 85;
-    case TriangleLayout::triangle8: return wide ? 118 : 85;
+    case TriangleLayout::triangle4: return wide ? 70 : 70;
+    case TriangleLayout::triangle8: return wide ? 68 : 64;
     case TriangleLayout::triangle1i: return wide ? 97 : 75;
-    case TriangleLayout::triangle4i: return wide ? 48 : 48;
+    case TriangleLayout::triangle4i: return wide ? 42 : 42;
     case TriangleLayout::triangle1v: return wide ? 107 : 85;
-    case TriangleLayout::triangle4v: return wide ? 70 : 70;
+    case TriangleLayout::triangle4v: return wide ? 57 : 57;
   }
   return 0;
 }
