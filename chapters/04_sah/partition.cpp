@@ -38,30 +38,36 @@ uint32_t partition_and_bin(PrimRef* refs, uint32_t count, const SplitPlane& plan
   // Hoare's partition: walk in from both ends, bin every primitive on the side it belongs to,
   // and swap the pairs found on the wrong sides.
   // Each primitive is read into lanes once; the two that stop the scans are binned from the
-  // lanes already read when they are swapped.
+  // lanes already read when they are swapped. The mappings are copied first: the bins are
+  // stored as the same vector type, and the compiler would otherwise read the mappings again
+  // after every store to a bin.
+  const BinMapping parent = *plane.map, left_map = *out.left_map, right_map = *out.right_map;
+  const SplitPlane cut{&parent, plane.axis, plane.pos};
+  Bins& left = *out.left;
+  Bins& right = *out.right;
   uint32_t i = 0, j = count;
   while (true) {
     for (; i < j; ++i) {
       const PrimLanes p(refs[i]);
-      if (!plane.goes_left(p)) break;
-      out.left->add(p, *out.left_map);
+      if (!cut.goes_left(p)) break;
+      left.add(p, left_map);
     }
     if (i == j) return i;
     const PrimLanes goes_right(refs[i]);
     for (; i < j - 1; --j) {
       const PrimLanes p(refs[j - 1]);
-      if (plane.goes_left(p)) break;
-      out.right->add(p, *out.right_map);
+      if (cut.goes_left(p)) break;
+      right.add(p, right_map);
     }
     if (i == j - 1) {  // refs[i] was the last one: it goes right
-      out.right->add(goes_right, *out.right_map);
+      right.add(goes_right, right_map);
       return i;
     }
     // refs[i] belongs right and refs[j - 1] left, and i < j - 1.
     const PrimLanes goes_left(refs[j - 1]);
     std::swap(refs[i], refs[j - 1]);
-    out.left->add(goes_left, *out.left_map);
-    out.right->add(goes_right, *out.right_map);
+    left.add(goes_left, left_map);
+    right.add(goes_right, right_map);
     ++i;
     --j;
   }

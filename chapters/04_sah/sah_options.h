@@ -61,7 +61,7 @@ enum class OccluderOrder {
 /// The knobs of build_binned_sah(). The defaults are those the chapter's measurements chose.
 struct SahBuildOptions {
   /// Candidate split planes per axis are the borders of this many bins over the centroids'
-  /// bounds, 2 to kMaxSahBins. Sets of fewer primitives use as many bins as primitives.
+  /// bounds, 2 to kMaxSahBins. Small sets use fewer (bins_for() in binning.h).
   int bins = 32;
   /// No leaf holds more primitives than this (at least 1). Smaller sets become leaves when
   /// the SAH says a leaf is cheaper than a split.

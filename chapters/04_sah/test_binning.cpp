@@ -47,6 +47,17 @@ TEST_CASE("ch04: the bin mapping covers the centroid bounds and refuses degenera
   CHECK(huge.splittable(2));
 }
 
+TEST_CASE("ch04: small sets get fewer bins, never fewer than two nor more than asked") {
+  CHECK(bins_for(0, 32) == 2);
+  CHECK(bins_for(1, 32) == 2);
+  CHECK(bins_for(5, 32) == 5);    // one per primitive while that is below 4 + n / 4
+  CHECK(bins_for(16, 32) == 8);   // 4 + 16 / 4
+  CHECK(bins_for(100, 32) == 29);
+  CHECK(bins_for(1000, 32) == 32);
+  CHECK(bins_for(1000, 64) == 64);
+  CHECK(bins_for(1000, 7) == 7);
+}
+
 TEST_CASE("ch04: the vector and the scalar bin computations agree") {
   // Binning uses bins() (all axes at once), partitioning bin() (one axis): a primitive must
   // land on the same side in both, or the children's boxes would not bound their primitives.

@@ -59,7 +59,7 @@ double estimated_bytes_per_triangle(TriangleLayout layout, int width) {
   switch (layout) {
     case TriangleLayout::triangle1: return wide ? 107 : 85;
     case TriangleLayout::triangle4: return wide ? 70 : 70;
-    case TriangleLayout::triangle8: return wide ? 68 : 64;
+    case TriangleLayout::triangle8: return wide ? 70 : 66;
     case TriangleLayout::triangle1i: return wide ? 97 : 75;
     case TriangleLayout::triangle4i: return wide ? 42 : 42;
     case TriangleLayout::triangle1v: return wide ? 107 : 85;
