@@ -37,7 +37,9 @@ bool is_buildable(const PrimRef& ref) {
 template <int N>
 double sah_cost(const BuildTree<N>& tree, double traversal_cost, double intersection_cost,
                 int leaf_block) {
-  auto tests = [leaf_block](uint32_t count) { return double((count + uint64_t(leaf_block) - 1) / uint64_t(leaf_block)); };
+  auto tests = [leaf_block](uint32_t count) {
+    return double((count + uint64_t(leaf_block) - 1) / uint64_t(leaf_block));
+  };
   const double root_area = tree.root.box.half_area();
   if (tree.empty() || root_area <= 0.0) return 0.0;
   if (tree.root.is_leaf()) return intersection_cost * tests(tree.root.leaf_count);
@@ -48,7 +50,8 @@ double sah_cost(const BuildTree<N>& tree, double traversal_cost, double intersec
     for (int i = 0; i < node.num_children; ++i) {
       const auto& child = node.children[i];
       const double p = child.box.half_area() / root_area;
-      cost += child.is_leaf() ? p * intersection_cost * tests(child.leaf_count) : p * traversal_cost;
+      cost +=
+          child.is_leaf() ? p * intersection_cost * tests(child.leaf_count) : p * traversal_cost;
     }
   }
   return cost;

@@ -126,8 +126,8 @@ std::vector<uint32_t> depth_first_order(const BuildTree<N>& tree) {
 /// area/root_area * count * intersection_cost. Leaves whose primitives are tested `leaf_block`
 /// at a time (chapter 6's blocks) count ceil(count / leaf_block) tests instead of count.
 template <int N>
-double sah_cost(const BuildTree<N>& tree, double traversal_cost = 1.0, double intersection_cost = 1.0,
-                int leaf_block = 1);
+double sah_cost(const BuildTree<N>& tree, double traversal_cost = 1.0,
+                double intersection_cost = 1.0, int leaf_block = 1);
 
 extern template double sah_cost<2>(const BuildTree<2>&, double, double, int);
 extern template double sah_cost<4>(const BuildTree<4>&, double, double, int);

@@ -19,8 +19,8 @@ namespace rtk {
 /// one, cannot be hit and are left out (counted in `stats->skipped`); an empty or all-invalid
 /// input gives an empty tree. Invalid options (bins outside [2, kMaxSahBins], max_leaf_size
 /// below 1, a leaf_block that is not a power of two up to 16, a negative or non-finite cost, a
-/// non-positive intersection cost, negative threads) throw std::invalid_argument naming the option; more than 2^32 - 2 references throw
-/// std::length_error.
+/// non-positive intersection cost, negative threads) throw std::invalid_argument naming the
+/// option; more than 2^32 - 2 references throw std::length_error.
 ///
 /// The result depends on `refs` and `options` only: the same input gives the same tree, node
 /// for node and bit for bit, whatever the number of threads.

@@ -122,8 +122,9 @@ struct SahBuildStats {
 };
 
 /// Throws std::invalid_argument, naming `who` and the option, unless the options are usable:
-/// 2 to kMaxSahBins bins, a leaf size of at least 1, a leaf block of 1, 2, 4, 8 or 16, finite costs (intersection above zero),
-/// a thread count of 0 or more. Chapter 5's builder checks its SAH part with it too.
+/// 2 to kMaxSahBins bins, a leaf size of at least 1, a leaf block of 1, 2, 4, 8 or 16, finite
+/// costs (intersection above zero), a thread count of 0 or more. Chapter 5's builder checks its
+/// SAH part with it too.
 void check_sah_options(const SahBuildOptions& options, const std::string& who);
 
 }  // namespace rtk

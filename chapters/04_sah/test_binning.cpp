@@ -50,8 +50,8 @@ TEST_CASE("ch04: the bin mapping covers the centroid bounds and refuses degenera
 TEST_CASE("ch04: small sets get fewer bins, never fewer than two nor more than asked") {
   CHECK(bins_for(0, 32) == 2);
   CHECK(bins_for(1, 32) == 2);
-  CHECK(bins_for(5, 32) == 5);    // one per primitive while that is below 4 + n / 4
-  CHECK(bins_for(16, 32) == 8);   // 4 + 16 / 4
+  CHECK(bins_for(5, 32) == 5);   // one per primitive while that is below 4 + n / 4
+  CHECK(bins_for(16, 32) == 8);  // 4 + 16 / 4
   CHECK(bins_for(100, 32) == 29);
   CHECK(bins_for(1000, 32) == 32);
   CHECK(bins_for(1000, 64) == 64);
@@ -134,8 +134,9 @@ TEST_CASE("ch04: the sweep finds the cheapest border, by count or by blocks, as 
         for (int i = 1; i < n; ++i) {
           const uint32_t l = bin_count(*bins, axis, 0, i), r = bin_count(*bins, axis, i, n);
           if (l == 0 || r == 0) continue;
-          cheapest = std::min(cheapest, half_area(bin_bounds(*bins, axis, 0, i)) * leaf_tests(l, block) +
-                                            half_area(bin_bounds(*bins, axis, i, n)) * leaf_tests(r, block));
+          cheapest = std::min(cheapest,
+                              half_area(bin_bounds(*bins, axis, 0, i)) * leaf_tests(l, block) +
+                                  half_area(bin_bounds(*bins, axis, i, n)) * leaf_tests(r, block));
         }
       const Split s = find_best_split(*bins, map, block);
       REQUIRE(s.valid());

@@ -151,7 +151,8 @@ void consider(std::vector<SpatialSplit>& planes, int axis, float pos, const Box3
   if (nl == 0 || nr == 0) return;
   SpatialSplit s;
   s.axis = axis, s.pos = pos;
-  s.cost = half_area(left) * leaf_tests(nl, leaf_block) + half_area(right) * leaf_tests(nr, leaf_block);
+  s.cost =
+      half_area(left) * leaf_tests(nl, leaf_block) + half_area(right) * leaf_tests(nr, leaf_block);
   s.left_count = nl, s.right_count = nr;
   s.left_bounds = left, s.right_bounds = right;
   planes.push_back(s);
@@ -171,8 +172,8 @@ std::vector<SpatialSplit> find_centre_splits(std::span<const PrimRef> refs, cons
       price_plane(refs.data(), first, last, axis, pos, mesh, parts[b]);
     });
     for (size_t b = 1; b < parts.size(); ++b) parts[0].merge(parts[b]);
-    consider(best, axis, pos, parts[0].left, parts[0].left_count, parts[0].right, parts[0].right_count,
-             leaf_block);
+    consider(best, axis, pos, parts[0].left, parts[0].left_count, parts[0].right,
+             parts[0].right_count, leaf_block);
   }
   return best;
 }
