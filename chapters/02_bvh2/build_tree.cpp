@@ -37,9 +37,7 @@ bool is_buildable(const PrimRef& ref) {
 template <int N>
 double sah_cost(const BuildTree<N>& tree, double traversal_cost, double intersection_cost,
                 int leaf_block) {
-  auto tests = [leaf_block](uint32_t count) {
-    return double((count + uint64_t(leaf_block) - 1) / uint64_t(leaf_block));
-  };
+  auto tests = [leaf_block](uint32_t count) { return double(leaf_tests(count, leaf_block)); };
   const double root_area = tree.root.box.half_area();
   if (tree.empty() || root_area <= 0.0) return 0.0;
   if (tree.root.is_leaf()) return intersection_cost * tests(tree.root.leaf_count);

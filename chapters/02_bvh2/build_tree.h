@@ -120,6 +120,12 @@ std::vector<uint32_t> depth_first_order(const BuildTree<N>& tree) {
   return order;
 }
 
+/// The number of tests a leaf of `n` primitives costs when they are tested `leaf_block` at a
+/// time (chapter 6's blocks): ceil(n / leaf_block).
+inline uint32_t leaf_tests(uint32_t n, int leaf_block) {
+  return uint32_t((uint64_t(n) + uint64_t(leaf_block) - 1) / uint64_t(leaf_block));
+}
+
 /// The surface area heuristic cost of a tree (MacDonald and Booth, "Heuristics for ray tracing
 /// using space subdivision", 1990): the expected cost of a random ray that hits the root box,
 /// sum over inner nodes of area/root_area * traversal_cost plus over leaves of

@@ -26,14 +26,9 @@ void evaluate(PrimSet& set, const Bins& bins, const BinMapping& map,
     const double split =
         double(options.traversal_cost) * area + double(options.intersection_cost) * set.split.cost;
     set.wants_split = n > uint32_t(options.max_leaf_size) || split < leaf;
-    set.gain = area * tests - set.split.cost;
-    // A split made only to fill a free slot of the parent's node costs no traversal step, and
-    // the SAH sees a gain wherever the halves' boxes are smaller. But where the halves need
-    // more blocks than the set, the slot is free and the block is not: four triangles in a
-    // block of eight. Such a split fills a slot only if it gains a large share.
-    if (split_adds_blocks(n, set.split.left_count, n - set.split.left_count, options.leaf_block) &&
-        !(set.gain > kBlockFillGain * area * tests))
-      set.gain = -std::numeric_limits<double>::infinity();
+    // Splits made only to fill a free slot: no extra block without a large gain.
+    set.gain = slot_fill_gain(area * tests - set.split.cost, area * tests, n, set.split.left_count,
+                              n - set.split.left_count, options.leaf_block);
   }
 }
 // [ch04-leaf-test]

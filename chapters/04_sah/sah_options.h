@@ -3,10 +3,12 @@
 /// decide how it divides its work between threads.
 #pragma once
 
-#include <string>
-
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <string>
+
+#include "02_bvh2/build_tree.h"
 
 namespace rtk {
 
@@ -86,26 +88,29 @@ struct SahBuildOptions {
   int threads = 0;
 };
 
-/// The number of tests a leaf of `n` primitives costs when they are tested `leaf_block` at a
-/// time (a power of two): ceil(n / leaf_block).
-inline uint32_t leaf_tests(uint32_t n, int leaf_block) {
-  return uint32_t((uint64_t(n) + uint64_t(leaf_block) - 1) / uint64_t(leaf_block));
-}
-
-/// Whether cutting a set of `n` primitives into `left` and `right` makes its leaves take more
-/// blocks of `leaf_block` (above 1) than the set takes as one leaf: ceil(left / leaf_block) +
-/// ceil(right / leaf_block) > ceil(n / leaf_block). With leaf_block 1 there are no blocks, and
-/// no lanes to leave empty.
-inline bool split_adds_blocks(uint32_t n, uint32_t left, uint32_t right, int leaf_block) {
-  return leaf_block > 1 &&
-         leaf_tests(left, leaf_block) + leaf_tests(right, leaf_block) > leaf_tests(n, leaf_block);
-}
-
-/// A split whose halves take more blocks than their set (split_adds_blocks) fills a free slot
-/// of a node only if it lowers the set's intersection term by more than this share. With 0,
-/// BVH8 trees with triangle8 leaves took a quarter less memory, but one mesh's shadow rays
-/// slowed by a third; with a quarter, nearly the same memory without that loss (chapter 4).
+// [ch04-slot-fill]
+/// A split whose halves take more blocks than their set fills a free slot of a node only if it
+/// lowers the set's intersection term by more than this share. With 0, BVH8 trees with
+/// triangle8 leaves took a quarter less memory, but one mesh's shadow rays slowed by a third;
+/// with a quarter, nearly the same memory without that loss (chapter 4).
 inline constexpr double kBlockFillGain = 0.25;
+
+/// The gain, for node filling (node_filling.h), of cutting a set of `n` primitives into `left`
+/// and `right`: `gain`, the drop of its intersection term from `leaf_term`, the term of the set
+/// as one leaf. A split made only to fill a free slot costs no traversal step, but where its
+/// halves take more blocks of `leaf_block` (above 1) than the set, the slot is free and the
+/// block is not: four triangles in a block of eight. Such a split keeps its gain only above
+/// kBlockFillGain of the term, and gets -infinity (no filling) below.
+inline double slot_fill_gain(double gain, double leaf_term, uint32_t n, uint32_t left,
+                             uint32_t right, int leaf_block) {
+  const bool adds_blocks =
+      leaf_block > 1 &&
+      leaf_tests(left, leaf_block) + leaf_tests(right, leaf_block) > leaf_tests(n, leaf_block);
+  if (adds_blocks && !(gain > kBlockFillGain * leaf_term))
+    return -std::numeric_limits<double>::infinity();
+  return gain;
+}
+// [ch04-slot-fill]
 
 /// What a build did. Every count is a property of the input and the options alone, never of
 /// the thread schedule, so that two builds of one scene report the same figures.

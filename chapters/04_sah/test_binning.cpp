@@ -28,6 +28,20 @@ bool same_bins(const Bins& a, const Bins& b) {
   return true;
 }
 
+/// The centroid bounds' mapping with `n` bins, and every reference binned with it.
+struct Binned {
+  BinMapping map;
+  std::unique_ptr<Bins> bins;
+};
+Binned bin_all(const std::vector<PrimRef>& refs, int n) {
+  Box3f cent;
+  for (const auto& r : refs) cent.extend(centroid(r));
+  Binned out{BinMapping(cent, n), std::make_unique<Bins>()};
+  out.bins->reset(n);
+  bin_prims(refs.data(), uint32_t(refs.size()), out.map, *out.bins);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("ch04: the bin mapping covers the centroid bounds and refuses degenerate axes") {
@@ -83,12 +97,7 @@ TEST_CASE("ch04: the sweep finds the gap between two clusters, priced analytical
   std::vector<PrimRef> refs;
   for (uint32_t i = 0; i < 10; ++i) refs.push_back(box_ref({0, 0, 0}, {1, 1, 1}, i));
   for (uint32_t i = 10; i < 20; ++i) refs.push_back(box_ref({10, 0, 0}, {11, 1, 1}, i));
-  Box3f cent;
-  for (const auto& r : refs) cent.extend(centroid(r));
-  const BinMapping map(cent, 32);
-  auto bins = std::make_unique<Bins>();
-  bins->reset(32);
-  bin_prims(refs.data(), uint32_t(refs.size()), map, *bins);
+  const auto [map, bins] = bin_all(refs, 32);
   const Split s = find_best_split(*bins, map);
   REQUIRE(s.valid());
   CHECK(s.axis == 0);
@@ -105,12 +114,7 @@ TEST_CASE("ch04: a leaf tested in blocks is priced by its blocks") {
   std::vector<PrimRef> refs;
   for (uint32_t i = 0; i < 5; ++i) refs.push_back(box_ref({0, 0, 0}, {1, 1, 1}, i));
   for (uint32_t i = 5; i < 8; ++i) refs.push_back(box_ref({10, 0, 0}, {11, 1, 1}, i));
-  Box3f cent;
-  for (const auto& r : refs) cent.extend(centroid(r));
-  const BinMapping map(cent, 8);
-  auto bins = std::make_unique<Bins>();
-  bins->reset(8);
-  bin_prims(refs.data(), uint32_t(refs.size()), map, *bins);
+  const auto [map, bins] = bin_all(refs, 8);
   CHECK(find_best_split(*bins, map).cost == doctest::Approx(24.0));
   CHECK(find_best_split(*bins, map, 4).cost == doctest::Approx(9.0));
   CHECK(find_best_split(*bins, map, 8).cost == doctest::Approx(6.0));
@@ -118,13 +122,8 @@ TEST_CASE("ch04: a leaf tested in blocks is priced by its blocks") {
 
 TEST_CASE("ch04: the sweep finds the cheapest border, by count or by blocks, as brute force does") {
   const std::vector<PrimRef> refs = make_prim_refs(test::make_random_soup(300, 5));
-  Box3f cent;
-  for (const auto& r : refs) cent.extend(centroid(r));
   for (const int n : {5, 16, 32}) {
-    const BinMapping map(cent, n);
-    auto bins = std::make_unique<Bins>();
-    bins->reset(n);
-    bin_prims(refs.data(), uint32_t(refs.size()), map, *bins);
+    const auto [map, bins] = bin_all(refs, n);
     for (const int block : {1, 4, 8, 16}) {
       CAPTURE(n);
       CAPTURE(block);
@@ -149,24 +148,14 @@ TEST_CASE("ch04: the sweep finds the cheapest border, by count or by blocks, as 
 TEST_CASE("ch04: the sweep finds no split when all centroids coincide") {
   std::vector<PrimRef> refs;
   for (uint32_t i = 0; i < 8; ++i) refs.push_back(box_ref(Vec3f(-float(i)), Vec3f(float(i)), i));
-  Box3f cent;
-  for (const auto& r : refs) cent.extend(centroid(r));
-  const BinMapping map(cent, 8);
-  auto bins = std::make_unique<Bins>();
-  bins->reset(8);
-  bin_prims(refs.data(), 8, map, *bins);
+  const auto [map, bins] = bin_all(refs, 8);
   CHECK_FALSE(find_best_split(*bins, map).valid());
 }
 
 TEST_CASE("ch04: one-pass partition sends each primitive to its side and bins it there") {
   const TriangleMesh mesh = test::make_random_soup(3000, 7);
   std::vector<PrimRef> refs = make_prim_refs(mesh);
-  Box3f cent;
-  for (const auto& r : refs) cent.extend(centroid(r));
-  const BinMapping map(cent, 32);
-  auto bins = std::make_unique<Bins>();
-  bins->reset(32);
-  bin_prims(refs.data(), uint32_t(refs.size()), map, *bins);
+  const auto [map, bins] = bin_all(refs, 32);
   const Split s = find_best_split(*bins, map);
   REQUIRE(s.valid());
 

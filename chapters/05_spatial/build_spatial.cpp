@@ -142,14 +142,11 @@ class Builder {
       const double leaf = double(sah_.intersection_cost) * area * tests;
       const double split = double(sah_.traversal_cost) * area + double(sah_.intersection_cost) * s.split_cost();
       s.wants_split = n > uint32_t(sah_.max_leaf_size) || split < leaf;
-      s.gain = area * tests - s.split_cost();
-      // As in chapter 4: a split whose halves take more blocks fills a free slot only if it
-      // gains more than kBlockFillGain.
+      // As in chapter 4: no extra block to fill a free slot without a large gain.
       const uint32_t left = s.use_spatial ? s.spatial.left_count : s.object.left_count;
       const uint32_t right = s.use_spatial ? s.spatial.right_count : n - s.object.left_count;
-      if (split_adds_blocks(n, left, right, sah_.leaf_block) &&
-          !(s.gain > kBlockFillGain * area * tests))
-        s.gain = -std::numeric_limits<double>::infinity();
+      s.gain = slot_fill_gain(area * tests - s.split_cost(), area * tests, n, left, right,
+                              sah_.leaf_block);
     }
   }
   // [ch05-evaluate]

@@ -20,7 +20,7 @@ struct SpatialSplit {
   int axis = -1;  ///< -1: no plane separates anything
   float pos = 0.0f;
   /// The SAH intersection term, half_area(left) * tests(left) + half_area(right) * tests(right),
-  /// a side's tests being leaf_tests(count, leaf_block) (chapter 4).
+  /// a side's tests being leaf_tests(count, leaf_block) (chapter 2).
   double cost = std::numeric_limits<double>::infinity();
   uint32_t left_count = 0, right_count = 0;  ///< straddling references count on both sides
   Box3f left_bounds, right_bounds;           ///< the clipped references' bounds on each side

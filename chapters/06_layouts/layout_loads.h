@@ -61,6 +61,21 @@ RTK_INLINE void load_vertices(const TriangleMi<M>& b, Vec3v<M>& p0, Vec3v<M>& p1
 // [ch06-load-blocks]
 
 // [ch06-moeller-leaf]
+/// Calls make(std::type_identity<Leaf>{}) with the leaf policy that reads the vertex or indexed
+/// `layout` with the test `Test`, and returns what it returns; {} for the precomputed layouts,
+/// which only Möller-Trumbore reads. Chapter 7 gives these layouts its own tests through it.
+template <class Test, class Make>
+auto with_vertex_leaf(TriangleLayout layout, Make&& make)
+    -> decltype(make(std::type_identity<LeafIntersector<Triangle1iLayout, Test>>{})) {
+  switch (layout) {
+    case TriangleLayout::triangle1i: return make(std::type_identity<LeafIntersector<Triangle1iLayout, Test>>{});
+    case TriangleLayout::triangle4i: return make(std::type_identity<LeafIntersector<Triangle4iLayout, Test>>{});
+    case TriangleLayout::triangle1v: return make(std::type_identity<LeafIntersector<Triangle1vLayout, Test>>{});
+    case TriangleLayout::triangle4v: return make(std::type_identity<LeafIntersector<Triangle4vLayout, Test>>{});
+    default: return {};
+  }
+}
+
 /// Calls make(std::type_identity<Leaf>{}) with the leaf policy that reads `layout` with
 /// Möller-Trumbore, and returns what it returns: the precomputed blocks give the test its edges
 /// and normal, the others their vertices. The one list of layouts that every per-layout
@@ -73,12 +88,8 @@ auto with_moeller_leaf(TriangleLayout layout, Make&& make)
     case TriangleLayout::triangle1: return make(std::type_identity<LeafIntersector<Triangle1Layout, M, true>>{});
     case TriangleLayout::triangle4: return make(std::type_identity<LeafIntersector<Triangle4Layout, M, true>>{});
     case TriangleLayout::triangle8: return make(std::type_identity<LeafIntersector<Triangle8Layout, M, true>>{});
-    case TriangleLayout::triangle1i: return make(std::type_identity<LeafIntersector<Triangle1iLayout, M>>{});
-    case TriangleLayout::triangle4i: return make(std::type_identity<LeafIntersector<Triangle4iLayout, M>>{});
-    case TriangleLayout::triangle1v: return make(std::type_identity<LeafIntersector<Triangle1vLayout, M>>{});
-    case TriangleLayout::triangle4v: return make(std::type_identity<LeafIntersector<Triangle4vLayout, M>>{});
+    default: return with_vertex_leaf<M>(layout, make);
   }
-  return {};
 }
 // [ch06-moeller-leaf]
 

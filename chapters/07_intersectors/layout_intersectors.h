@@ -15,7 +15,8 @@ namespace rtk {
 // [ch07-layout-kernels]
 /// The kernels of each ISA for a layout BVH of width N (2, 4 or 8) whose leaves are in
 /// `config.layout`, tested with `config.intersector`: the leaf policy with_leaf_intersector
-/// names, in chapter 6's traversal of that width. `structure` is the LayoutBVH's `bvh`. Throws std::invalid_argument for an unsupported pair.
+/// names, in chapter 6's traversal of that width. `structure` is the LayoutBVH's `bvh`. Throws
+/// std::invalid_argument for an unsupported pair.
 RTK_DECLARE_FOR_EACH_ISA(template <int N> TraceKernels intersector_kernels(TriangleConfig config))
 
 /// Closest hits through a layout BVH with the intersector `kind` and the kernels of `isa`.

@@ -8,8 +8,6 @@
 #error "leaf_intersectors.h belongs to kernel sources compiled once per ISA"
 #endif
 
-#include <type_traits>
-
 #include "02_bvh2/leaf_intersector.h"
 #include "06_layouts/layout_loads.h"
 #include "07_intersectors/pluecker.h"
@@ -21,24 +19,15 @@ namespace rtk::RTK_ISA {
 // [ch07-leaf-intersectors]
 /// Calls make(std::type_identity<Leaf>{}) with the leaf policy of `config` and returns what
 /// it returns: Möller-Trumbore in any layout (chapter 6's with_moeller_leaf), the stable
-/// Plücker test and the watertight test in the vertex and indexed layouts, whose blocks keep
-/// the vertices those tests start from. An unsupported pair (layout_supports) gives {}.
+/// Plücker test and the watertight test in the vertex and indexed layouts (chapter 6's
+/// with_vertex_leaf), whose blocks keep the vertices those tests start from. An unsupported pair (layout_supports) gives {}.
 template <class Make>
 auto with_leaf_intersector(TriangleConfig config, Make&& make)
     -> decltype(with_moeller_leaf(config.layout, make)) {
-  auto with_test = [&]<class T>(std::type_identity<T>) -> decltype(with_moeller_leaf(config.layout, make)) {
-    switch (config.layout) {
-      case TriangleLayout::triangle1i: return make(std::type_identity<LeafIntersector<Triangle1iLayout, T>>{});
-      case TriangleLayout::triangle4i: return make(std::type_identity<LeafIntersector<Triangle4iLayout, T>>{});
-      case TriangleLayout::triangle1v: return make(std::type_identity<LeafIntersector<Triangle1vLayout, T>>{});
-      case TriangleLayout::triangle4v: return make(std::type_identity<LeafIntersector<Triangle4vLayout, T>>{});
-      default: return {};
-    }
-  };
   switch (config.intersector) {
     case IntersectorKind::moeller: return with_moeller_leaf(config.layout, make);
-    case IntersectorKind::pluecker: return with_test(std::type_identity<PlueckerStable>{});
-    case IntersectorKind::watertight: return with_test(std::type_identity<Watertight>{});
+    case IntersectorKind::pluecker: return with_vertex_leaf<PlueckerStable>(config.layout, make);
+    case IntersectorKind::watertight: return with_vertex_leaf<Watertight>(config.layout, make);
   }
   return {};
 }
