@@ -122,7 +122,6 @@ section_ch03_ablation() { # BVH4/8: each traversal trick off against all on; the
 section_ch04() { # SAH: build speed and quality, large scenes, threads, what the trees buy, costs; then ch04_bins and ch04_occluders
   build ch04_bench
   run_section ch04_bins
-  run_section ch04_isa
   run_section ch04_growth
   run_section ch04_occluders
   RTK_SCENES=$SCENES gbench ch04 "$B/chapters/04_sah/ch04_bench" \
@@ -146,13 +145,6 @@ section_ch04_occluders() { # SAH: the order of children for shadow rays, visits 
     --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
   table ch04_occluders chapters/04_sah/ch04_occluders.md \
     python3 chapters/04_sah/bench_tables.py occluders "$OUT/ch04_occluders.json"
-}
-
-section_ch04_isa() { # SAH: the binning passes of each instruction set, build speed of one tree; the table
-  build ch04_bench
-  gbench ch04_isa "$B/chapters/04_sah/ch04_bench" --benchmark_filter='^isa/' --benchmark_repetitions=8 \
-    --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
-  table ch04_isa chapters/04_sah/ch04_isa.md python3 chapters/04_sah/bench_tables.py isa "$OUT/ch04_isa.json"
 }
 
 section_ch04_growth() { # SAH: build time and peak memory per triangle at 1M, 4M and 16M triangles; the chart
@@ -385,7 +377,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch11 ch12 ch13 ch14 ch15 ch16 embree)
-PARTS=(ch02_tree ch03_ablation ch04_bins ch04_isa ch04_growth ch04_occluders ch05_budget ch06_speed ch12_gallery
+PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch12_gallery
        ch14_convergence ch14_equal_time ch14_path_loop)
 
 # --- the machine ------------------------------------------------------------------------------

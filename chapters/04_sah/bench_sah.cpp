@@ -90,10 +90,9 @@ double sah(const BuildTree<N>& tree) {
 
 template <int N>
 BuildTree<N> build(std::span<const PrimRef> refs, Builder builder, int threads, int bins = 32,
-                   OccluderOrder order = OccluderOrder::likely_blocker, Isa isa = best_isa()) {
+                   OccluderOrder order = OccluderOrder::likely_blocker) {
   if (builder == Builder::median) return build_median<N>(refs, kMedianLeaf);
   SahBuildOptions options;
-  options.isa = isa;
   options.rotations = builder == Builder::binned_rotations;
   options.threads = threads;
   options.bins = bins;
@@ -126,14 +125,14 @@ const std::vector<PrimRef>& terrain_refs(int triangles) {
 /// and the SAH cost of the tree.
 template <int N>
 void bm_build(benchmark::State& state, const std::vector<PrimRef>* refs, Builder builder,
-              int threads, int bins, Isa isa) {
+              int threads, int bins) {
   size_t peak = 0;
   BuildTree<N> tree;
   for (auto _ : state) {
     tree = BuildTree<N>();  // free the previous tree before measuring this build's peak
     const size_t before = g_bytes.load();
     g_peak = before;
-    tree = build<N>(*refs, builder, threads, bins, OccluderOrder::likely_blocker, isa);
+    tree = build<N>(*refs, builder, threads, bins);
     peak = std::max(peak, g_peak.load() - before);
     benchmark::DoNotOptimize(tree.nodes.data());
   }
@@ -148,9 +147,9 @@ void bm_build(benchmark::State& state, const std::vector<PrimRef>* refs, Builder
 // [ch04-bench-build]
 
 void add_build(const std::string& name, const std::vector<PrimRef>* refs, int width, Builder b,
-               int threads, int bins = 32, Isa isa = best_isa()) {
+               int threads, int bins = 32) {
   auto fn = width == 2 ? bm_build<2> : width == 4 ? bm_build<4> : bm_build<8>;
-  benchmark::RegisterBenchmark(name.c_str(), fn, refs, b, threads, bins, isa)
+  benchmark::RegisterBenchmark(name.c_str(), fn, refs, b, threads, bins)
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();
 }
@@ -432,10 +431,6 @@ const bool registered = [] {
   for (const int bins : {4, 8, 16, 32, 64})
     add_build("bins/bvh4/binned/bins:" + std::to_string(bins) + "/tris:1000000/threads:1",
               &terrain_refs(1'000'000), 4, Builder::binned, 1, bins);
-  // The binning passes of each instruction set (the trees are the same).
-  for (const Isa isa : supported_isas())
-    add_build("isa/bvh8/binned+rot/isa:" + std::string(isa_name(isa)) + "/tris:1000000/threads:1",
-              &terrain_refs(1'000'000), 8, Builder::binned_rotations, 1, 32, isa);
   register_traces();
   register_real_builds();
   if (std::getenv("RTK_BENCH_GROWTH")) register_growth();

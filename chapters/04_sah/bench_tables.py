@@ -5,7 +5,7 @@ so that the page can place each next to the prose about it.
     ch04_bench --benchmark_out=ch04.json --benchmark_out_format=json
     python3 chapters/04_sah/bench_tables.py TABLE ch04.json [more.json ...]
 
-TABLE is one of: build (the 1M-triangle terrain), large (the larger terrains), threads, bins, isa, real,
+TABLE is one of: build (the 1M-triangle terrain), large (the larger terrains), threads, bins, real,
 real_bvh8, trace, costs, occluders.
 """
 import json
@@ -85,19 +85,6 @@ def bins_table(rows):
     print("|---:|---:|---:|")
     for bins, b in found:
         print(f"| {bins} | {fmt(b['Mtris'])} | {fmt(b['sah'], 3)} |")
-
-
-def isa_table(rows):
-    found = [(m.group(1), b) for n, b in rows.items() for m in [re.match(r"isa/bvh8/binned\+rot/isa:([a-z0-9]+)/", n)] if m]
-    scalar = dict(found).get("scalar")
-    if not found or not scalar:
-        return
-    print("\n**The binning passes of each instruction set** (BVH8 with rotations, 1M-triangle terrain, "
-          "one thread; median of eight runs taken in random order):\n")
-    print("| binning passes | Mtris/s | against scalar | SAH |")
-    print("|---|---:|---:|---:|")
-    for isa, b in found:
-        print(f"| {isa} | {fmt(b['Mtris'])} | {fmt(b['Mtris'] / scalar['Mtris'])} | {fmt(b['sah'], 4)} |")
 
 
 def trace_table(rows):
@@ -198,7 +185,6 @@ TABLES = {
     "large": lambda rows: build_tables(rows, large=True),
     "threads": scaling_table,
     "bins": bins_table,
-    "isa": isa_table,
     "real": real_table,
     "real_bvh8": real_bvh8_table,
     "trace": trace_table,

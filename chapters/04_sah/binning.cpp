@@ -2,40 +2,43 @@
 
 #include <bit>
 #include <cmath>
-#include <cstring>
 
 namespace rtk::sah {
 
 namespace {
 
-/// A box being grown bin by bin, as the bins keep it: the minimum of the lower corners and of
-/// the negated upper corners.
+/// A box being grown bin by bin, in the bins' lane layout.
 struct Accumulator {
   static constexpr float kInf = std::numeric_limits<float>::infinity();
   Lanes4 lower{kInf, kInf, kInf, kInf};
-  Lanes4 neg_upper{kInf, kInf, kInf, kInf};
+  Lanes4 upper{-kInf, -kInf, -kInf, -kInf};
 
-  void extend(Lanes4 lo, Lanes4 neg_hi) {
+  void extend(Lanes4 lo, Lanes4 hi) {
     lower = min4(lo, lower);
-    neg_upper = min4(neg_hi, neg_upper);
+    upper = max4(hi, upper);
   }
-  Box3f box() const {
-    return {{lower[0], lower[1], lower[2]}, {-neg_upper[0], -neg_upper[1], -neg_upper[2]}};
+  /// Half the area in double precision (float overflows for extents past 1e19); only called
+  /// on a box that holds something.
+  double half_area() const {
+    const double dx = double(upper[0]) - lower[0], dy = double(upper[1]) - lower[1],
+                 dz = double(upper[2]) - lower[2];
+    return dx * dy + dy * dz + dz * dx;
   }
+  Box3f box() const { return {{lower[0], lower[1], lower[2]}, {upper[0], upper[1], upper[2]}}; }
 };
 
 }  // namespace
 
 Box3f bin_bounds(const Bins& bins, int axis, int first, int last) {
   Accumulator a;
-  for (int i = first; i < last; ++i) a.extend(bins.bin[axis][i].lower, bins.bin[axis][i].neg_upper);
+  for (int i = first; i < last; ++i) a.extend(bins.bin[axis][i].lower, bins.bin[axis][i].upper);
   return a.box();
 }
 
 Box3f bin_centroid_bounds(const Bins& bins, int axis, int first, int last) {
   Accumulator a;
   for (int i = first; i < last; ++i)
-    a.extend(bins.bin[axis][i].cent_lower, bins.bin[axis][i].neg_cent_upper);
+    a.extend(bins.bin[axis][i].cent_lower, bins.bin[axis][i].cent_upper);
   return a.box();
 }
 
@@ -49,16 +52,14 @@ uint32_t bin_count(const Bins& bins, int axis, int first, int last) {
 Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   const int n = bins.num_bins;
   constexpr float inf = std::numeric_limits<float>::infinity();
-  const Lanes4 pos_inf{inf, inf, inf, inf};
+  const Lanes4 pos_inf{inf, inf, inf, inf}, neg_inf = -pos_inf;
   // The sweep runs in single precision, the three axes side by side in the lanes of one
   // register. Float areas overflow past coordinates of about 1e19, so the coordinates are first
   // scaled by a power of two that brings the largest to [0.5, 1): exact, and it leaves the
   // order of the costs as it was. Every primitive is in one bin of axis 0, so those bins give
   // the set's box.
-  Lanes4 lo = pos_inf, neg_hi = pos_inf;
-  for (int i = 0; i < n; ++i)
-    lo = min4(lo, bins.bin[0][i].lower), neg_hi = min4(neg_hi, bins.bin[0][i].neg_upper);
-  const Lanes4 hi = -neg_hi;
+  Lanes4 lo = pos_inf, hi = neg_inf;
+  for (int i = 0; i < n; ++i) lo = min4(lo, bins.bin[0][i].lower), hi = max4(hi, bins.bin[0][i].upper);
   float largest = 0.0f;
   for (int a = 0; a < 3; ++a)
     if (lo[a] <= hi[a]) largest = std::max({largest, std::fabs(lo[a]), std::fabs(hi[a])});
@@ -66,13 +67,12 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   int exponent = 0;
   if (!(largest < 0x1p40f)) std::frexp(largest, &exponent);
   const float s = exponent == 0 ? 1.0f : std::ldexp(1.0f, -std::clamp(exponent, -125, 127));
-  // Half the areas of the three boxes [l[a], -nu[a]], one per lane, after scaling: each box's
-  // products dx dy, dy dz, dz dx side by side, then summed across by transposing. The
-  // extents are negated, nu + l = -(u - l) exactly, which the products do not see.
-  auto areas = [s](const Lanes4 (&l)[3], const Lanes4 (&nu)[3]) {
+  // Half the areas of the three boxes [l[a], u[a]], one per lane, after scaling: each box's
+  // products dx dy, dy dz, dz dx side by side, then summed across by transposing.
+  auto areas = [s](const Lanes4 (&l)[3], const Lanes4 (&u)[3]) {
     Lanes4 t[3];
     for (int a = 0; a < 3; ++a) {
-      const Lanes4 d = s == 1.0f ? nu[a] + l[a] : nu[a] * s + l[a] * s;
+      const Lanes4 d = s == 1.0f ? u[a] - l[a] : u[a] * s - l[a] * s;
       t[a] = d * __builtin_shufflevector(d, d, 1, 2, 0, 3);  // lane 3: 0 * 0
     }
     const Lanes4 zero{0, 0, 0, 0};
@@ -102,13 +102,12 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   // times count (infinite where no primitive is there).
   Lanes4 right_cost[kMaxSahBins];
   {
-    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, nu[3] = {pos_inf, pos_inf, pos_inf};
+    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
     Counts4 c = none;
     for (int i = n - 1; i > 0; --i) {
-      for (int a = 0; a < 3; ++a)
-        l[a] = min4(l[a], bins.bin[a][i].lower), nu[a] = min4(nu[a], bins.bin[a][i].neg_upper);
+      for (int a = 0; a < 3; ++a) l[a] = min4(l[a], bins.bin[a][i].lower), u[a] = max4(u[a], bins.bin[a][i].upper);
       c += counts(i);
-      const Lanes4 cost = areas(l, nu) * tests(c);
+      const Lanes4 cost = areas(l, u) * tests(c);
       right_cost[i] = c == none ? pos_inf : cost;
     }
   }
@@ -116,13 +115,13 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   // first one, lowest axis then lowest border, among equals.
   Lanes4 cost[kMaxSahBins];
   {
-    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, nu[3] = {pos_inf, pos_inf, pos_inf};
+    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
     Counts4 c = none;
     for (int i = 1; i < n; ++i) {
       for (int a = 0; a < 3; ++a)
-        l[a] = min4(l[a], bins.bin[a][i - 1].lower), nu[a] = min4(nu[a], bins.bin[a][i - 1].neg_upper);
+        l[a] = min4(l[a], bins.bin[a][i - 1].lower), u[a] = max4(u[a], bins.bin[a][i - 1].upper);
       c += counts(i - 1);
-      const Lanes4 total = areas(l, nu) * tests(c) + right_cost[i];
+      const Lanes4 total = areas(l, u) * tests(c) + right_cost[i];
       cost[i] = c == none ? pos_inf : total;
     }
   }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "01_base/box3.h"
@@ -40,17 +41,36 @@ inline int bins_for(uint32_t prims, int requested) {
 }
 // [ch04-bins-for]
 
-/// Four floats in one SSE register, for the sweep (binning.cpp), which is compiled once, for
-/// the baseline instruction set: this GCC/Clang vector type gives it 4-wide minimum and maximum
-/// there (SSE2 on x86-64) without ISA flags. Lane 3 is unused.
+/// Four floats in one SSE register. The builder is compiled once, for the baseline instruction
+/// set, and this GCC/Clang vector type gives it 4-wide minimum and maximum there (SSE2 on
+/// x86-64) without ISA flags. Lane 3 is unused.
 typedef float Lanes4 __attribute__((vector_size(16)));
 
 /// Minimum and maximum with the SSE rule (`a < b ? a : b`), lane by lane.
 RTK_INLINE Lanes4 min4(Lanes4 a, Lanes4 b) { return a < b ? a : b; }
 RTK_INLINE Lanes4 max4(Lanes4 a, Lanes4 b) { return a > b ? a : b; }
 
-/// Four 32-bit integers.
+/// Four 32-bit integers, the bin indices of one centroid on the three axes.
 typedef int32_t Ints4 __attribute__((vector_size(16)));
+
+/// A primitive's box corners as lanes, with zero in lane 3 (the ID's bits there could be a
+/// denormal float, which arithmetic handles slowly). Each is one aligned 16-byte load and a
+/// mask.
+RTK_INLINE Lanes4 lanes_xyz(const void* four_words) {
+  Ints4 bits;
+  std::memcpy(&bits, four_words, sizeof bits);
+  const Ints4 xyz{-1, -1, -1, 0};
+  return reinterpret_cast<Lanes4>(bits & xyz);
+}
+RTK_INLINE Lanes4 lanes_lower(const PrimRef& r) { return lanes_xyz(&r.lower); }  // and the ID
+RTK_INLINE Lanes4 lanes_upper(const PrimRef& r) { return lanes_xyz(&r.upper); }  // and a spare word
+
+/// A primitive as the binning passes read it: its box corners and centroid as lanes.
+struct PrimLanes {
+  Lanes4 lower, upper, centroid;
+  RTK_INLINE explicit PrimLanes(const PrimRef& r)
+      : lower(lanes_lower(r)), upper(lanes_upper(r)), centroid(lower * 0.5f + upper * 0.5f) {}
+};
 
 // [ch04-bin-mapping]
 /// Maps a centroid to its bin on each axis: bin = floor((c - origin) * scale), clamped to the
@@ -74,11 +94,15 @@ struct BinMapping {
   }
   /// Whether binning can separate anything along `axis`.
   bool splittable(int axis) const { return scale[axis] > 0.0f; }
-  /// The bin of a centroid's coordinate `c` along a splittable `axis`: floor((c - origin) *
-  /// scale) clamped to [0, last bin] while still a float, and a NaN (an unusable axis, whose
-  /// product may be 0 times infinity) to 0. The binning passes (binning_kernels.cpp) do the
-  /// same arithmetic on three axes at once, so that every primitive is partitioned to the side
-  /// its bin was counted on.
+  /// The bins of a centroid on the three axes (lane 3 is 0). The position is clamped to
+  /// [0, last bin] while still a float, one minimum and one maximum (SSE2 has no integer
+  /// ones); a NaN (an unusable axis, whose product may be 0 times infinity) becomes 0.
+  RTK_INLINE Ints4 bins(Lanes4 c) const {
+    const Lanes4 zero{0, 0, 0, 0}, last = zero + float(num_bins - 1);
+    return __builtin_convertvector(min4(max4((c - origin) * scale, zero), last), Ints4);
+  }
+  /// The bin of a centroid's coordinate `c` along a splittable `axis`: the same arithmetic as
+  /// bins(), so that partitioning sends every primitive where binning counted it.
   RTK_INLINE int bin(float c, int axis) const {
     const float f = (c - origin[axis]) * scale[axis], last = float(num_bins - 1);
     const float above = f > 0.0f ? f : 0.0f;
@@ -88,13 +112,11 @@ struct BinMapping {
 // [ch04-bin-mapping]
 
 /// One bin: the bounds of the boxes and of the centroids that fell into it, 64 bytes (a cache
-/// line), kept as four minimums: an upper bound is stored negated, max(x) = -min(-x), so that
-/// adding a primitive is one 16-lane minimum where the instruction set has one (AVX-512) and
-/// the same minimum on every part of the bin where it has not. Plain data without
-/// constructors, so that a Bins object costs nothing until reset() touches the bins in use.
-struct alignas(64) Bin {
-  Lanes4 lower, neg_upper;            ///< bounds of the primitives' boxes
-  Lanes4 cent_lower, neg_cent_upper;  ///< bounds of their centroids
+/// line). Plain data without constructors, so that a Bins object costs nothing until reset()
+/// touches the bins in use.
+struct Bin {
+  Lanes4 lower, upper;            ///< bounds of the primitives' boxes
+  Lanes4 cent_lower, cent_upper;  ///< bounds of their centroids
 };
 static_assert(sizeof(Bin) == 64, "one bin per cache line");
 
@@ -102,7 +124,6 @@ static_assert(sizeof(Bin) == 64, "one bin per cache line");
 /// The bins of one set of primitives on all three axes. Each bin keeps its centroids' bounds as
 /// well as its boxes' bounds: once a split is chosen, the children's centroid bounds, which
 /// the children's own bins need, are known without another pass over the primitives.
-/// The passes that fill them are in binning_kernels.cpp.
 struct Bins {
   int num_bins = 0;
   Bin bin[3][kMaxSahBins];
@@ -110,29 +131,43 @@ struct Bins {
   /// that the sweep reads the three axes' counts of a bin with one load.
   alignas(16) uint32_t count[kMaxSahBins][4];
 
-  /// Empties the first `n` bins on every axis: every minimum +infinity, every count 0.
+  /// Empties the first `n` bins on every axis.
   void reset(int n) {
     num_bins = n;
     constexpr float inf = std::numeric_limits<float>::infinity();
-    const Lanes4 pos{inf, inf, inf, inf};
+    const Lanes4 pos{inf, inf, inf, inf}, neg = -pos;
     for (int axis = 0; axis < 3; ++axis)
-      for (int i = 0; i < n; ++i) bin[axis][i] = Bin{pos, pos, pos, pos};
+      for (int i = 0; i < n; ++i) bin[axis][i] = Bin{pos, neg, pos, neg};
     for (int i = 0; i < n; ++i) count[i][0] = count[i][1] = count[i][2] = count[i][3] = 0;
   }
-  /// Adds another set's bins (same mapping) to these. Minimum and integer addition do not
-  /// depend on the order they are applied in, so the merged bins are the same whichever
+  /// Drops a primitive into its bin on each axis.
+  RTK_INLINE void add(const PrimRef& ref, const BinMapping& map) { add(PrimLanes(ref), map); }
+  RTK_INLINE void add(const PrimLanes& p, const BinMapping& map) {
+    const Ints4 i = map.bins(p.centroid);
+    const int i0 = i[0], i1 = i[1], i2 = i[2];
+    extend(bin[0][i0], p.lower, p.upper, p.centroid, p.centroid);
+    extend(bin[1][i1], p.lower, p.upper, p.centroid, p.centroid);
+    extend(bin[2][i2], p.lower, p.upper, p.centroid, p.centroid);
+    ++count[i0][0], ++count[i1][1], ++count[i2][2];
+  }
+  /// Adds another set's bins (same mapping) to these. Minimum, maximum and integer addition do
+  /// not depend on the order they are applied in, so the merged bins are the same whichever
   /// thread binned which primitives.
   void merge(const Bins& other) {
     for (int axis = 0; axis < 3; ++axis)
       for (int i = 0; i < num_bins; ++i) {
-        Bin& b = bin[axis][i];
         const Bin& o = other.bin[axis][i];
-        b.lower = min4(o.lower, b.lower);
-        b.neg_upper = min4(o.neg_upper, b.neg_upper);
-        b.cent_lower = min4(o.cent_lower, b.cent_lower);
-        b.neg_cent_upper = min4(o.neg_cent_upper, b.neg_cent_upper);
+        extend(bin[axis][i], o.lower, o.upper, o.cent_lower, o.cent_upper);
         count[i][axis] += other.count[i][axis];
       }
+  }
+
+ private:
+  RTK_INLINE static void extend(Bin& b, Lanes4 lo, Lanes4 hi, Lanes4 clo, Lanes4 chi) {
+    b.lower = min4(lo, b.lower);
+    b.upper = max4(hi, b.upper);
+    b.cent_lower = min4(clo, b.cent_lower);
+    b.cent_upper = max4(chi, b.cent_upper);
   }
 };
 // [ch04-bins]

@@ -2,14 +2,12 @@
 /// Executing a split in the same pass that bins the two halves. Each primitive is read once
 /// per level of the tree: it is sent left or right by its bin in the parent's mapping and, in
 /// passing, dropped into the bins of the child it goes to (guide section 4.3.1: "evaluating the
-/// heuristic for the left and right side while doing a split"). The serial passes are compiled
-/// once per instruction set (binning_kernels.cpp); every one gives the same bins, bit for bit.
+/// heuristic for the left and right side while doing a split").
 #pragma once
 
 #include <cstdint>
 #include <cstring>
 
-#include "01_base/cpu_features.h"
 #include "04_sah/binning.h"
 
 namespace rtk::sah {
@@ -20,6 +18,9 @@ struct SplitPlane {
   int axis = 0;
   int pos = 0;
 
+  /// The same decision for a primitive already read into lanes, with the vector arithmetic of
+  /// BinMapping::bins(), which gives the same bin as bin().
+  RTK_INLINE bool goes_left(const PrimLanes& p) const { return map->bins(p.centroid)[axis] < pos; }
   RTK_INLINE bool goes_left(const PrimRef& ref) const {
     float lo[3], hi[3];
     std::memcpy(lo, &ref.lower, sizeof lo);
@@ -38,19 +39,16 @@ struct ChildBins {
   Bins* right = nullptr;
 };
 
-/// Bins `count` primitives into `bins` (which keeps what it held before), with the variant of
-/// instruction set `isa`.
-void bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins,
-               Isa isa = best_isa());
+/// Bins `count` primitives into `bins` (which keeps what it held before).
+void bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins);
 
 /// bin_prims() as a parallel loop over blocks; the bins come out the same as the serial ones.
-void parallel_bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins,
-                        Isa isa = best_isa());
+void parallel_bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins);
 
 /// Partitions `count` primitives in place by `plane` and bins each into its side's bins (which
 /// keep what they held before). Returns the number that went left.
 uint32_t partition_and_bin(PrimRef* refs, uint32_t count, const SplitPlane& plane,
-                           const ChildBins& out, Isa isa = best_isa());
+                           const ChildBins& out);
 
 /// partition_and_bin() as parallel loops: the range is cut into blocks of kPartitionBlockPrims,
 /// each block partitioned on its own, and the primitives that are then on the wrong side of the
@@ -58,6 +56,6 @@ uint32_t partition_and_bin(PrimRef* refs, uint32_t count, const SplitPlane& plan
 /// one. Where every primitive ends up depends on the blocks only, never on the threads. The bins
 /// are reset first.
 uint32_t parallel_partition_and_bin(PrimRef* refs, uint32_t count, const SplitPlane& plane,
-                                    const ChildBins& out, Isa isa = best_isa());
+                                    const ChildBins& out);
 
 }  // namespace rtk::sah

@@ -43,9 +43,9 @@ PrimSet make_root_set(PrimRef* refs, uint32_t count, const Box3f& bounds, const 
   auto bins = std::make_unique<Bins>();
   bins->reset(map.num_bins);
   if (count >= kLargeJobPrims)
-    parallel_bin_prims(refs, count, map, *bins, options.isa);
+    parallel_bin_prims(refs, count, map, *bins);
   else
-    bin_prims(refs, count, map, *bins, options.isa);
+    bin_prims(refs, count, map, *bins);
   evaluate(set, *bins, map, options);
   return set;
 }
@@ -65,7 +65,7 @@ PrimSet fallback_half(PrimRef* refs, uint32_t begin, uint32_t end, const SahBuil
   const BinMapping map(half.centroids, bins_for(half.size(), options.bins));
   Bins bins;
   bins.reset(map.num_bins);
-  bin_prims(refs + begin, half.size(), map, bins, options.isa);
+  bin_prims(refs + begin, half.size(), map, bins);
   evaluate(half, bins, map, options);
   return half;
 }
@@ -92,11 +92,11 @@ std::pair<PrimSet, PrimSet> split_set(const PrimSet& set, PrimRef* refs,
   const ChildBins out{&left_map, &left_bins, &right_map, &right_bins};
   uint32_t left_count;
   if (set.size() >= kLargeJobPrims) {
-    left_count = parallel_partition_and_bin(refs + set.begin, set.size(), plane, out, options.isa);
+    left_count = parallel_partition_and_bin(refs + set.begin, set.size(), plane, out);
   } else {
     left_bins.reset(left_map.num_bins);
     right_bins.reset(right_map.num_bins);
-    left_count = partition_and_bin(refs + set.begin, set.size(), plane, out, options.isa);
+    left_count = partition_and_bin(refs + set.begin, set.size(), plane, out);
   }
   // Binning and partitioning classify with the same function, so the counts agree; if they
   // did not, the children's boxes would not bound their primitives.

@@ -8,7 +8,6 @@
 #include <limits>
 #include <string>
 
-#include "01_base/cpu_features.h"
 #include "02_bvh2/build_tree.h"
 
 namespace rtk {
@@ -87,9 +86,6 @@ struct SahBuildOptions {
   /// 0: run in the caller's TBB task arena (all cores unless the caller limited them);
   /// n > 0: run in a private arena of n threads. The tree is the same either way.
   int threads = 0;
-  /// The instruction-set variant of the binning passes (binning_kernels.h): the tree is the
-  /// same for every one, only the build's speed differs.
-  Isa isa = best_isa();
 };
 
 // [ch04-slot-fill]

@@ -54,23 +54,6 @@ TEST_CASE_TEMPLATE("ch04: one, two and four threads build the same tree", W,
 }
 // [ch04-test-determinism]
 
-TEST_CASE_TEMPLATE("ch04: every instruction set's binning passes build the same tree", W,
-                   std::integral_constant<int, 4>, std::integral_constant<int, 8>) {
-  constexpr int N = W::value;
-  TriangleMesh soup = test::make_random_soup(int(kLargeJobPrims + 5000), 41);
-  test::add_degenerate_triangles(soup, 200, 42);
-  const std::vector<PrimRef> refs = make_prim_refs(soup);
-  SahBuildOptions options;
-  options.leaf_block = 8;
-  options.isa = Isa::scalar;
-  const BuildTree<N> scalar = build_binned_sah<N>(refs, options);
-  for (const Isa isa : supported_isas()) {
-    CAPTURE(isa_name(isa));
-    options.isa = isa;
-    CHECK(test::identical(build_binned_sah<N>(refs, options), scalar));
-  }
-}
-
 TEST_CASE("ch04: determinism holds with every option, and in the caller's arena") {
   const std::vector<PrimRef> refs =
       make_prim_refs(test::make_terrain(140, 33));  // 39,200 triangles

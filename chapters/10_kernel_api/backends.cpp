@@ -13,12 +13,11 @@ namespace rtk::api {
 namespace {
 
 // The tree: chapter 4's binned SAH builder (object splits) or chapter 5's (object and spatial
-// splits under the default 30 % duplication budget), with `sah`, `threads` threads and the
-// binning passes of `isa` (the tree is the same for any count and any ISA).
+// splits under the default 30 % duplication budget), with `sah` and `threads` threads (the
+// tree is the same for any count).
 template <int N, bool Spatial>
-BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, Isa isa, int threads) {
+BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, int threads) {
   sah.threads = threads;
-  sah.isa = isa;
   if constexpr (Spatial) {
     SpatialBuildOptions options;
     options.sah = sah;
@@ -34,7 +33,7 @@ BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, Isa isa, 
 // blocks, traced by the kernels chapter 7 resolves for the width, layout and intersector.
 template <int N, bool Spatial>
 BuiltStructure build_layout(const TriangleMesh& mesh, Isa isa, int threads, TriangleConfig tri) {
-  const BuildTree<N> tree = build_tree<N, Spatial>(mesh, sah_options_for(tri.layout), isa, threads);
+  const BuildTree<N> tree = build_tree<N, Spatial>(mesh, sah_options_for(tri.layout), threads);
   return bind(make_layout_bvh<N>(tree, mesh, tri.layout), RTK_PICK_ISA(isa, intersector_kernels<N>)(tri),
               [](const LayoutBVH<N>& bvh) { return &bvh.bvh; });
 }
