@@ -78,6 +78,7 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
                                     " of a mesh with " + std::to_string(mesh.size()));
     return append_leaf<L>(bvh.leaves, mesh, prims);
   };
+  bvh.leaves.bytes.reserve(leaf_block_bytes<L>(tree));
   // Nodes, and the leaves' triangles with them, go to memory in depth-first order.
   const std::vector<uint32_t> order = depth_first_order(tree);
   std::vector<uint32_t> position(tree.nodes.size());

@@ -58,6 +58,24 @@ concept LeafLayout = requires(const TriangleMesh& mesh, std::span<const uint32_t
   L::pack(mesh, prims, out);
 } && sizeof(typename L::Block) % 16 == 0;
 
+/// The bytes of the blocks of every leaf of a build tree (chapter 2's BuildTree<N>) in layout L:
+/// what append_leaf() will add for it, so that the blocks are allocated once. Grown leaf by leaf,
+/// they would be copied at every doubling and keep up to as much again in spare capacity,
+/// memory that bytes() does not count. A leaf too large for a reference is left out: making
+/// the structure refuses it.
+template <LeafLayout L, class Tree>
+size_t leaf_block_bytes(const Tree& tree) {
+  auto blocks = [](const auto& child) -> size_t {
+    const size_t n = child.is_leaf() ? L::block_count(child.leaf_count) : 0;
+    return n <= kMaxLeafBlocks ? n : 0;
+  };
+  size_t total = blocks(tree.root);
+  for (const auto& node : tree.nodes)
+    for (size_t c = 0; c < node.children.size() && c < size_t(node.num_children); ++c)
+      total += blocks(node.children[c]);
+  return total * sizeof(typename L::Block);
+}
+
 /// Appends the blocks of one leaf holding triangles `prims` and returns its reference. Throws
 /// std::invalid_argument when the leaf needs more than kMaxLeafBlocks blocks.
 template <LeafLayout L>

@@ -104,6 +104,7 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
                                     " of a mesh with " + std::to_string(mesh.size()));
     return append_leaf<L>(bvh.leaves, mesh, prims);
   };
+  bvh.leaves.bytes.reserve(leaf_block_bytes<L>(tree));
   // Nodes, and the leaves' triangles with them, go to memory in depth-first order: a ray
   // that descends into a subtree finds its next nodes near the ones it has just read.
   constexpr float inf = std::numeric_limits<float>::infinity();
