@@ -61,12 +61,13 @@ concept LeafLayout = requires(const TriangleMesh& mesh, std::span<const uint32_t
 /// The bytes of the blocks of every leaf of a build tree (chapter 2's BuildTree<N>) in layout L:
 /// what append_leaf() will add for it, so that the blocks are allocated once. Grown leaf by leaf,
 /// they would be copied at every doubling and keep up to as much again in spare capacity,
-/// memory that bytes() does not count. A leaf too large for a reference is left out: making
-/// the structure refuses it.
+/// memory that bytes() does not count. A leaf the structure will refuse (too large for a
+/// reference, or naming entries past the end of prim_ids) is left out.
 template <LeafLayout L, class Tree>
 size_t leaf_block_bytes(const Tree& tree) {
-  auto blocks = [](const auto& child) -> size_t {
-    const size_t n = child.is_leaf() ? L::block_count(child.leaf_count) : 0;
+  auto blocks = [&](const auto& child) -> size_t {
+    if (!child.is_leaf() || size_t(child.index) + child.leaf_count > tree.prim_ids.size()) return 0;
+    const size_t n = L::block_count(child.leaf_count);
     return n <= kMaxLeafBlocks ? n : 0;
   };
   size_t total = blocks(tree.root);
