@@ -1,5 +1,6 @@
 """Chapter 4's growth chart data: build time per triangle and peak memory per triangle of the
-default builder (BVH8, rotations on) over spheres of 1M, 4M and 16M triangles, from the growth/
+tree of the default structure (BVH8, rotations on, leaves priced in blocks of eight) over spheres of
+1M, 4M and 16M triangles, from the growth/
 benchmarks of `ch04_bench` (JSON; medians when the run repeated). One thread: the CPU time of
 the building thread, which a shared machine's load does not inflate; two threads: wall-clock
 time. The last column is what one thread's time per triangle would be if it grew exactly like
