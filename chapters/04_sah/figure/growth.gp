@@ -8,7 +8,7 @@ set logscale x 2
 set xtics ("1M" 1000000, "4M" 4000000, "16M" 16000000)
 set xrange [700000:23000000]
 set grid
-set key top left
+set key bottom right
 set xlabel "triangles"
 set ylabel "build time per triangle (ns)"
 set y2label "peak memory per triangle (bytes)"
