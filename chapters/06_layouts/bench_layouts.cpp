@@ -2,7 +2,8 @@
 // through BVH2, BVH4 and BVH8, for every ISA, on primary and diffuse rays.
 //   ch06_bench --benchmark_filter='sphere_130k/diffuse/bvh4/.*/avx512'
 // Set RTK_SCENES=<shared/scenes> to add real meshes. Names read
-// layouts/<scene>/<rays>/bvh<N>/<layout>.moeller/<isa> (chapter 7 measures the other tests).
+// layouts/<scene>/<rays>/bvh<N>/<layout>.moeller/<isa> (chapter 7 measures the other tests), and
+// pack/<scene>/bvh8/triangle8 times the making of the structure from a built tree, one thread.
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "02_bvh2/bench_support.h"
+#include "04_sah/build_sah.h"
 #include "06_layouts/layout_build.h"
 
 using namespace rtk;
@@ -60,7 +62,25 @@ void bm_trace(benchmark::State& state, bench::SceneSource scene, TriangleLayout 
   state.counters["leaf_bytes/tri"] = double(bvh.bvh.leaves.bytes.size()) / triangles;
 }
 
+/// Making the default structure (BVH8, triangle8) from its tree on one thread: the nodes and
+/// the packing of the leaves, which reads every triangle's vertices in leaf order.
+void bm_pack(benchmark::State& state, bench::SceneSource scene) {
+  const TriangleMesh& mesh = bench::scene_mesh(scene);
+  SahBuildOptions options = sah_options_for(TriangleLayout::triangle8);
+  options.threads = 1;
+  const BuildTree<8> tree = build_binned_sah<8>(make_prim_refs(mesh), options);
+  for (auto _ : state) {
+    const LayoutBVH<8> bvh = make_layout_bvh<8>(tree, mesh, TriangleLayout::triangle8);
+    benchmark::DoNotOptimize(bvh.bvh.nodes.data());
+  }
+  state.counters["Mtris/s"] =
+      benchmark::Counter(double(mesh.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 const bool registered = [] {
+  for (const bench::SceneSource& scene : bench::bench_scenes())
+    benchmark::RegisterBenchmark(("pack/" + scene.name + "/bvh8/triangle8").c_str(), bm_pack, scene)
+        ->Unit(benchmark::kMillisecond);
   for (const bench::SceneSource& scene : bench::bench_scenes())
     for (const bool diffuse : {false, true})
       for (const int width : {2, 4, 8})
