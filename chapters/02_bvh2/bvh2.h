@@ -12,6 +12,7 @@
 #include "01_base/isa_dispatch.h"
 #include "01_base/ray.h"
 #include "02_bvh2/build_tree.h"
+#include "02_bvh2/leaf_placement.h"
 #include "02_bvh2/node_ref.h"
 #include "02_bvh2/trace_kernels.h"
 #include "02_bvh2/triangle1.h"
@@ -57,9 +58,11 @@ struct BVH2 {
 /// Turns a binary build tree over `mesh` into a BVH2 whose leaves use layout L. Throws
 /// std::invalid_argument for a tree that does not fit: a node without exactly two children, a
 /// leaf range outside prim_ids, a primitive ID not in the mesh, a leaf of more than
-/// kMaxLeafBlocks blocks, or a tree deeper than the traversal stack.
-template <LeafLayout L = Triangle1Layout>
-BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
+/// kMaxLeafBlocks blocks, or a tree deeper than the traversal stack. The nodes are made by
+/// `loop(n, f)`, f(k) for the k-th node: in turn by default, on many threads with a parallel
+/// loop (chapter 6); the structure is the same.
+template <LeafLayout L = Triangle1Layout, class Loop = SerialLoop>
+BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh, const Loop& loop = {}) {
   BVH2 bvh;
   bvh.leaves.layout = std::string(L::kName);
   if (tree.empty()) return bvh;
@@ -68,27 +71,18 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
   if (bvh.depth + 1 > kBvh2StackSize)
     throw std::invalid_argument("a binary tree of depth " + std::to_string(bvh.depth) +
                                 " is deeper than the BVH2 traversal stack allows");
-  auto leaf_ref = [&](const BuildTree<2>::Child& c) -> NodeRef {
-    if (size_t(c.index) + c.leaf_count > tree.prim_ids.size())
-      throw std::invalid_argument("a leaf names entries past the end of prim_ids");
-    const std::span<const uint32_t> prims(tree.prim_ids.data() + c.index, c.leaf_count);
-    for (uint32_t prim : prims)
-      if (prim >= mesh.size())
-        throw std::invalid_argument("the tree names triangle " + std::to_string(prim) +
-                                    " of a mesh with " + std::to_string(mesh.size()));
-    return append_leaf<L>(bvh.leaves, mesh, prims);
-  };
-  bvh.leaves.bytes.reserve(leaf_block_bytes<L>(tree));
   // Nodes, and the leaves' triangles with them, go to memory in depth-first order.
   const std::vector<uint32_t> order = depth_first_order(tree);
+  for (const uint32_t i : order)
+    if (tree.nodes[i].num_children != 2)
+      throw std::invalid_argument("binary node " + std::to_string(i) + " has " +
+                                  std::to_string(tree.nodes[i].num_children) + " children");
   std::vector<uint32_t> position(tree.nodes.size());
   for (size_t k = 0; k < order.size(); ++k) position[order[k]] = uint32_t(k);
+  const LeafPlacement<L, 2> leaves(tree, mesh, order, bvh.leaves);
   bvh.nodes.resize(order.size());
-  for (size_t k = 0; k < order.size(); ++k) {
+  loop(order.size(), [&](size_t k) {
     const auto& in = tree.nodes[order[k]];
-    if (in.num_children != 2)
-      throw std::invalid_argument("binary node " + std::to_string(order[k]) + " has " +
-                                  std::to_string(in.num_children) + " children");
     const Box3f& l = in.children[0].box;
     const Box3f& r = in.children[1].box;
     Node2& out = bvh.nodes[k];
@@ -96,13 +90,16 @@ BVH2 make_bvh2(const BuildTree<2>& tree, const TriangleMesh& mesh) {
       float* row = axis == 0 ? out.x : axis == 1 ? out.y : out.z;
       row[0] = l.lower[axis], row[1] = r.lower[axis], row[2] = l.upper[axis], row[3] = r.upper[axis];
     }
+    size_t at = leaves.first(k);
     for (int c = 0; c < 2; ++c) {
       const auto& child = in.children[size_t(c)];
-      out.children[c] = child.is_leaf() ? leaf_ref(child)
-                                        : make_inner_ref(size_t(position[child.index]) * sizeof(Node2));
+      out.children[c] = child.is_leaf()
+                            ? leaves.pack(child, at)
+                            : make_inner_ref(size_t(position[child.index]) * sizeof(Node2));
     }
-  }
-  bvh.root = tree.root.is_leaf() ? leaf_ref(tree.root) : make_inner_ref(0);
+  });
+  size_t at = leaves.first(order.size());
+  bvh.root = tree.root.is_leaf() ? leaves.pack(tree.root, at) : make_inner_ref(0);
   return bvh;
 }
 // [ch02-make-bvh2]

@@ -58,41 +58,37 @@ concept LeafLayout = requires(const TriangleMesh& mesh, std::span<const uint32_t
   L::pack(mesh, prims, out);
 } && sizeof(typename L::Block) % 16 == 0;
 
-/// The bytes of the blocks of every leaf of a build tree (chapter 2's BuildTree<N>) in layout L:
-/// what append_leaf() will add for it, so that the blocks are allocated once. Grown leaf by leaf,
-/// they would be copied at every doubling and keep up to as much again in spare capacity,
-/// memory that bytes() does not count. A leaf the structure will refuse (too large for a
-/// reference, or naming entries past the end of prim_ids) is left out.
-template <LeafLayout L, class Tree>
-size_t leaf_block_bytes(const Tree& tree) {
-  auto blocks = [&](const auto& child) -> size_t {
-    if (!child.is_leaf() || size_t(child.index) + child.leaf_count > tree.prim_ids.size()) return 0;
-    const size_t n = L::block_count(child.leaf_count);
-    return n <= kMaxLeafBlocks ? n : 0;
-  };
-  size_t total = blocks(tree.root);
-  for (const auto& node : tree.nodes)
-    for (size_t c = 0; c < node.children.size() && c < size_t(node.num_children); ++c)
-      total += blocks(node.children[c]);
-  return total * sizeof(typename L::Block);
+/// How many blocks of layout L a leaf of `n` triangles takes. Throws std::invalid_argument
+/// when that is more than a leaf reference can count (kMaxLeafBlocks).
+template <LeafLayout L>
+size_t blocks_for_leaf(size_t n) {
+  const size_t blocks = L::block_count(n);
+  if (blocks > kMaxLeafBlocks)
+    throw std::invalid_argument(
+        std::string("a leaf of ") + std::to_string(n) + " triangles needs " +
+        std::to_string(blocks) + " " + std::string(L::kName) + " blocks, more than the " +
+        std::to_string(kMaxLeafBlocks) + " a leaf can hold: build with a smaller leaf size");
+  return blocks;
+}
+
+/// Packs the blocks of one leaf holding triangles `prims` at byte `offset` of `leaves`, which
+/// holds them already, and returns its reference.
+template <LeafLayout L>
+NodeRef pack_leaf(LeafBlocks& leaves, size_t offset, const TriangleMesh& mesh,
+                  std::span<const uint32_t> prims) {
+  const size_t blocks = blocks_for_leaf<L>(prims.size());
+  if (blocks == 0) return kEmptyLeaf;
+  L::pack(mesh, prims, reinterpret_cast<typename L::Block*>(leaves.bytes.data() + offset));
+  return make_leaf_ref(offset, uint32_t(blocks));
 }
 
 /// Appends the blocks of one leaf holding triangles `prims` and returns its reference. Throws
 /// std::invalid_argument when the leaf needs more than kMaxLeafBlocks blocks.
 template <LeafLayout L>
 NodeRef append_leaf(LeafBlocks& leaves, const TriangleMesh& mesh, std::span<const uint32_t> prims) {
-  const size_t blocks = L::block_count(prims.size());
-  if (blocks > kMaxLeafBlocks)
-    throw std::invalid_argument(std::string("a leaf of ") + std::to_string(prims.size()) +
-                                " triangles needs " + std::to_string(blocks) + " " +
-                                std::string(L::kName) + " blocks, more than the " +
-                                std::to_string(kMaxLeafBlocks) +
-                                " a leaf can hold: build with a smaller leaf size");
-  if (blocks == 0) return kEmptyLeaf;
   const size_t offset = leaves.bytes.size();
-  leaves.bytes.resize(offset + blocks * sizeof(typename L::Block));
-  L::pack(mesh, prims, reinterpret_cast<typename L::Block*>(leaves.bytes.data() + offset));
-  return make_leaf_ref(offset, uint32_t(blocks));
+  leaves.bytes.resize(offset + blocks_for_leaf<L>(prims.size()) * sizeof(typename L::Block));
+  return pack_leaf<L>(leaves, offset, mesh, prims);
 }
 
 /// Throws std::invalid_argument unless the leaves are stored in the layout a kernel reads.

@@ -14,6 +14,7 @@
 #include "01_base/isa_dispatch.h"
 #include "01_base/ray.h"
 #include "02_bvh2/build_tree.h"
+#include "02_bvh2/leaf_placement.h"
 #include "02_bvh2/node_ref.h"
 #include "02_bvh2/trace_kernels.h"
 #include "02_bvh2/triangle1.h"
@@ -82,9 +83,10 @@ using BVH16 = BVHN<16>;
 /// traversal clamps the ray's interval to finite values, see bvhn_traverser.h), and the
 /// empty leaf. Throws std::invalid_argument for a tree that does not fit: a node with fewer
 /// than two or more than N children, a leaf range outside prim_ids, a primitive ID not in the
-/// mesh, a leaf of more than kMaxLeafBlocks blocks, or a tree deeper than kBvhMaxDepth.
-template <int N, LeafLayout L = Triangle1Layout>
-BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
+/// mesh, a leaf of more than kMaxLeafBlocks blocks, or a tree deeper than kBvhMaxDepth. The
+/// nodes are made by `loop(n, f)`, as chapter 2's make_bvh2() makes them.
+template <int N, LeafLayout L = Triangle1Layout, class Loop = SerialLoop>
+BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh, const Loop& loop = {}) {
   BVHN<N> bvh;
   bvh.leaves.layout = std::string(L::kName);
   if (tree.empty()) return bvh;
@@ -94,30 +96,22 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
     throw std::invalid_argument("a tree of depth " + std::to_string(bvh.depth) +
                                 " is deeper than the traversal stack allows (" +
                                 std::to_string(kBvhMaxDepth) + ")");
-  auto leaf_ref = [&](const typename BuildTree<N>::Child& c) -> NodeRef {
-    if (size_t(c.index) + c.leaf_count > tree.prim_ids.size())
-      throw std::invalid_argument("a leaf names entries past the end of prim_ids");
-    const std::span<const uint32_t> prims(tree.prim_ids.data() + c.index, c.leaf_count);
-    for (uint32_t prim : prims)
-      if (prim >= mesh.size())
-        throw std::invalid_argument("the tree names triangle " + std::to_string(prim) +
-                                    " of a mesh with " + std::to_string(mesh.size()));
-    return append_leaf<L>(bvh.leaves, mesh, prims);
-  };
-  bvh.leaves.bytes.reserve(leaf_block_bytes<L>(tree));
   // Nodes, and the leaves' triangles with them, go to memory in depth-first order: a ray
   // that descends into a subtree finds its next nodes near the ones it has just read.
   constexpr float inf = std::numeric_limits<float>::infinity();
   const std::vector<uint32_t> order = depth_first_order(tree);
+  for (const uint32_t i : order)
+    if (tree.nodes[i].num_children < 2 || tree.nodes[i].num_children > N)
+      throw std::invalid_argument("node " + std::to_string(i) + " has " +
+                                  std::to_string(tree.nodes[i].num_children) + " children");
   std::vector<uint32_t> position(tree.nodes.size());
   for (size_t k = 0; k < order.size(); ++k) position[order[k]] = uint32_t(k);
+  const LeafPlacement<L, N> leaves(tree, mesh, order, bvh.leaves);
   bvh.nodes.resize(tree.nodes.size());
-  for (size_t k = 0; k < order.size(); ++k) {
+  loop(order.size(), [&](size_t k) {
     const auto& in = tree.nodes[order[k]];
-    if (in.num_children < 2 || in.num_children > N)
-      throw std::invalid_argument("node " + std::to_string(order[k]) + " has " +
-                                  std::to_string(in.num_children) + " children");
     NodeN<N>& out = bvh.nodes[k];
+    size_t at = leaves.first(k);
     for (int c = 0; c < N; ++c) {
       const bool used = c < in.num_children;
       const auto& child = in.children[size_t(used ? c : 0)];
@@ -125,12 +119,16 @@ BVHN<N> make_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh) {
       out.lower_x[c] = box.lower.x, out.upper_x[c] = box.upper.x;
       out.lower_y[c] = box.lower.y, out.upper_y[c] = box.upper.y;
       out.lower_z[c] = box.lower.z, out.upper_z[c] = box.upper.z;
-      if (!used) out.children[c] = kEmptyLeaf;
-      else if (child.is_leaf()) out.children[c] = leaf_ref(child);
-      else out.children[c] = make_inner_ref(size_t(position[child.index]) * sizeof(NodeN<N>));
+      if (!used)
+        out.children[c] = kEmptyLeaf;
+      else if (child.is_leaf())
+        out.children[c] = leaves.pack(child, at);
+      else
+        out.children[c] = make_inner_ref(size_t(position[child.index]) * sizeof(NodeN<N>));
     }
-  }
-  bvh.root = tree.root.is_leaf() ? leaf_ref(tree.root) : make_inner_ref(0);
+  });
+  size_t at = leaves.first(order.size());
+  bvh.root = tree.root.is_leaf() ? leaves.pack(tree.root, at) : make_inner_ref(0);
   return bvh;
 }
 // [ch03-make-bvh]

@@ -70,7 +70,7 @@ void bm_pack(benchmark::State& state, bench::SceneSource scene) {
   options.threads = 1;
   const BuildTree<8> tree = build_binned_sah<8>(make_prim_refs(mesh), options);
   for (auto _ : state) {
-    const LayoutBVH<8> bvh = make_layout_bvh<8>(tree, mesh, TriangleLayout::triangle8);
+    const LayoutBVH<8> bvh = make_layout_bvh<8>(tree, mesh, TriangleLayout::triangle8, 1);
     benchmark::DoNotOptimize(bvh.bvh.nodes.data());
   }
   state.counters["Mtris/s"] =

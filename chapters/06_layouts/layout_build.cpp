@@ -21,7 +21,8 @@ template <int N>
 LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleLayout layout, int threads) {
   SahBuildOptions options = sah_options_for(layout);
   options.threads = threads;
-  return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, layout);
+  return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, layout,
+                            threads);
 }
 
 template LayoutBVH<2> build_layout_bvh<2>(const TriangleMesh&, TriangleLayout, int);

@@ -23,11 +23,14 @@ namespace rtk {
 template <int N>
 using LayoutTree = std::conditional_t<N == 2, BVH2, BVHN<N>>;
 
-/// Makes the node tree of width N with leaves in layout L.
-template <int N, LeafLayout L>
-LayoutTree<N> make_layout_tree(const BuildTree<N>& tree, const TriangleMesh& mesh) {
-  if constexpr (N == 2) return make_bvh2<L>(tree, mesh);
-  else return make_bvh<N, L>(tree, mesh);
+/// Makes the node tree of width N with leaves in layout L, its nodes made by `loop`.
+template <int N, LeafLayout L, class Loop = SerialLoop>
+LayoutTree<N> make_layout_tree(const BuildTree<N>& tree, const TriangleMesh& mesh,
+                               const Loop& loop = {}) {
+  if constexpr (N == 2)
+    return make_bvh2<L>(tree, mesh, loop);
+  else
+    return make_bvh<N, L>(tree, mesh, loop);
 }
 // [ch06-layout-tree]
 
@@ -45,13 +48,19 @@ struct LayoutBVH {
 };
 
 /// Makes the structure from a build tree over `mesh` with make_layout_tree, whose exceptions
-/// (those of make_bvh2 and make_bvh) it passes on.
+/// (those of make_bvh2 and make_bvh) it passes on. The nodes and their leaves are made by a
+/// parallel loop: in the caller's TBB task arena with `threads` = 0, in an arena of `threads`
+/// threads otherwise; the structure is the same, byte for byte, on any number.
 template <int N>
-LayoutBVH<N> make_layout_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh, TriangleLayout layout);
+LayoutBVH<N> make_layout_bvh(const BuildTree<N>& tree, const TriangleMesh& mesh,
+                             TriangleLayout layout, int threads = 0);
 
-extern template LayoutBVH<2> make_layout_bvh<2>(const BuildTree<2>&, const TriangleMesh&, TriangleLayout);
-extern template LayoutBVH<4> make_layout_bvh<4>(const BuildTree<4>&, const TriangleMesh&, TriangleLayout);
-extern template LayoutBVH<8> make_layout_bvh<8>(const BuildTree<8>&, const TriangleMesh&, TriangleLayout);
+extern template LayoutBVH<2> make_layout_bvh<2>(const BuildTree<2>&, const TriangleMesh&,
+                                                TriangleLayout, int);
+extern template LayoutBVH<4> make_layout_bvh<4>(const BuildTree<4>&, const TriangleMesh&,
+                                                TriangleLayout, int);
+extern template LayoutBVH<8> make_layout_bvh<8>(const BuildTree<8>&, const TriangleMesh&,
+                                                TriangleLayout, int);
 
 /// The node widths the layout kernels are compiled for.
 inline constexpr int kLayoutWidths[] = {2, 4, 8};

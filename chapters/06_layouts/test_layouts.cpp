@@ -2,12 +2,15 @@
 // and BVH8, against the brute-force oracle, ISA against ISA, layout against layout and width
 // against width; what each layout costs.
 #include <doctest/doctest.h>
+#include <tbb/global_control.h>
 
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
 #include "06_layouts/layout_build.h"
 #include "06_layouts/test_support_ch06.h"
+#include "06_layouts/triangle_m.h"
 
 using namespace rtk;
 
@@ -27,7 +30,49 @@ void check_every_layout(const test::LayoutScene& scene) {
   }
 }
 
+/// Whether two layout BVHs hold the same bytes: nodes, leaf blocks, root and bounds. The
+/// indexed layouts' blocks hold the address of their structure's own copy of the vertices,
+/// which differs from structure to structure; their blocks are compared by size only (the
+/// other tests trace them).
+template <int N>
+bool same_structure(const LayoutTree<N>& a, const LayoutTree<N>& b, bool indexed = false) {
+  return a.root == b.root && a.depth == b.depth && a.bounds == b.bounds &&
+         a.nodes.size() == b.nodes.size() &&
+         (indexed ? a.leaves.bytes.size() == b.leaves.bytes.size()
+                  : a.leaves.bytes == b.leaves.bytes) &&
+         std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])) == 0;
+}
+
+template <int N>
+void check_threads_make_the_same(const TriangleMesh& mesh) {
+  const BuildTree<N> tree = test::sah_tree<N>(mesh);
+  tbb::global_control allow_four(tbb::global_control::max_allowed_parallelism, 4);
+  for (const TriangleLayout layout : kAllLayouts) {
+    CAPTURE(N);
+    CAPTURE(layout_name(layout));
+    const bool indexed =
+        layout == TriangleLayout::triangle1i || layout == TriangleLayout::triangle4i;
+    const LayoutBVH<N> one = make_layout_bvh<N>(tree, mesh, layout, 1);
+    for (const int threads : {2, 4})
+      CHECK(
+          same_structure<N>(make_layout_bvh<N>(tree, mesh, layout, threads).bvh, one.bvh, indexed));
+    // And what chapters 2 and 3 make with their serial loop.
+    if (layout == TriangleLayout::triangle8)
+      CHECK(same_structure<N>(make_layout_tree<N, Triangle8Layout>(tree, mesh), one.bvh));
+    if (layout == TriangleLayout::triangle1)
+      CHECK(same_structure<N>(make_layout_tree<N, Triangle1Layout>(tree, mesh), one.bvh));
+  }
+}
+
 }  // namespace
+
+TEST_CASE("ch06: one, two and four threads make the same structure, byte for byte") {
+  // Enough nodes for the parallel loop to cut them into many pieces.
+  const TriangleMesh sphere = test::make_sphere(96, 192);
+  check_threads_make_the_same<2>(sphere);
+  check_threads_make_the_same<4>(sphere);
+  check_threads_make_the_same<8>(sphere);
+}
 
 TEST_CASE("ch06: every layout agrees with the oracle through BVH2, every ISA bit for bit") {
   for (const test::LayoutScene& scene : test::layout_scenes()) check_every_layout<2>(scene);

@@ -34,7 +34,8 @@ BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, int threa
 template <int N, bool Spatial>
 BuiltStructure build_layout(const TriangleMesh& mesh, Isa isa, int threads, TriangleConfig tri) {
   const BuildTree<N> tree = build_tree<N, Spatial>(mesh, sah_options_for(tri.layout), threads);
-  return bind(make_layout_bvh<N>(tree, mesh, tri.layout), RTK_PICK_ISA(isa, intersector_kernels<N>)(tri),
+  return bind(make_layout_bvh<N>(tree, mesh, tri.layout, threads),
+              RTK_PICK_ISA(isa, intersector_kernels<N>)(tri),
               [](const LayoutBVH<N>& bvh) { return &bvh.bvh; });
 }
 // [ch10-build-rows]
