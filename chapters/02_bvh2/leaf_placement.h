@@ -59,7 +59,7 @@ class LeafPlacement {
   /// Packs `leaf` at byte `at` of the blocks, returns its reference and moves `at` past it.
   NodeRef pack(const Child& leaf, size_t& at) const {
     const NodeRef ref = pack_leaf<L>(leaves_, at, mesh_, prims(leaf));
-    at += blocks_for_leaf<L>(leaf.leaf_count) * sizeof(typename L::Block);
+    at += leaf_blocks(ref) * sizeof(typename L::Block);  // 0 for the empty leaf
     return ref;
   }
 

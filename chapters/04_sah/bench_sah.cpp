@@ -92,14 +92,8 @@ template <int N>
 BuildTree<N> build(std::span<const PrimRef> refs, Builder builder, int threads, int bins = 32,
                    OccluderOrder order = OccluderOrder::likely_blocker, int leaf_block = 1) {
   if (builder == Builder::median) return build_median<N>(refs, kMedianLeaf);
-  SahBuildOptions options;
-  if (leaf_block > 1) {
-    // Leaves tested in blocks, priced as chapter 6 prices its layouts' blocks: one block costs
-    // one intersection, and a leaf holds at most two blocks.
-    options.leaf_block = leaf_block;
-    options.intersection_cost = 1.0f;
-    options.max_leaf_size = 2 * leaf_block;
-  }
+  // Leaves in blocks are priced as chapter 6 builds its layouts; by count, the defaults.
+  SahBuildOptions options = leaf_block > 1 ? block_priced_options(leaf_block) : SahBuildOptions{};
   options.rotations = builder == Builder::binned_rotations;
   options.threads = threads;
   options.bins = bins;

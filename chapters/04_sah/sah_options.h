@@ -88,6 +88,18 @@ struct SahBuildOptions {
   int threads = 0;
 };
 
+/// Options for leaves stored in blocks of `leaf_block` triangles tested together: a leaf is
+/// priced by its blocks, one block at the price of a node step (intersection_cost 1), and may
+/// hold two blocks (eight triangles for single triangles). Chapter 6 builds each triangle layout
+/// with these, for its block width.
+inline SahBuildOptions block_priced_options(int leaf_block) {
+  SahBuildOptions options;
+  options.leaf_block = leaf_block;
+  options.intersection_cost = 1.0f;
+  options.max_leaf_size = leaf_block == 1 ? 8 : 2 * leaf_block;
+  return options;
+}
+
 // [ch04-slot-fill]
 /// A split whose halves take more blocks than their set fills a free slot of a node only if it
 /// lowers the set's intersection term by more than this share. With 0, BVH8 trees with

@@ -10,11 +10,7 @@ SahBuildOptions sah_options_for(TriangleLayout layout) {
                        layout == TriangleLayout::triangle4v)
                         ? 4
                         : 1;
-  SahBuildOptions options;
-  options.leaf_block = width;
-  options.intersection_cost = 1.0f;
-  options.max_leaf_size = width == 1 ? 8 : 2 * width;
-  return options;
+  return block_priced_options(width);
 }
 
 template <int N>
