@@ -1,5 +1,6 @@
 #include "02_bvh2/build_tree.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -7,25 +8,40 @@
 
 namespace rtk {
 
-std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh) {
-  // An index past the vertex array would make us read memory that is not ours: refuse the mesh
-  // and say which triangle is wrong. Non-finite vertices only give a non-finite box, which the
-  // builders leave out of the tree (such a triangle can never be hit).
+bool vertex_indices_valid(const TriangleMesh& mesh, size_t i) {
   const size_t vertex_count = mesh.vertices.size();
-  for (size_t i = 0; i < mesh.size(); ++i)
+  const auto& tri = mesh.triangles[i];
+  return tri[0] < vertex_count && tri[1] < vertex_count && tri[2] < vertex_count;
+}
+
+void check_vertex_indices(const TriangleMesh& mesh, size_t first, size_t last) {
+  // An index past the vertex array would make us read memory that is not ours: refuse the mesh
+  // and say which triangle is wrong.
+  const size_t vertex_count = mesh.vertices.size();
+  for (size_t i = first; i < std::min(last, mesh.size()); ++i)
     for (uint32_t index : mesh.triangles[i])
       if (index >= vertex_count)
         throw std::invalid_argument("triangle " + std::to_string(i) + " names vertex " +
                                     std::to_string(index) + " of a mesh with " +
                                     std::to_string(vertex_count) + " vertices");
-  // Box3f::extend follows the SIMD min/max rule, under which a NaN coordinate can vanish from
-  // a box: mark the box of a triangle with a non-finite vertex as NaN outright.
+}
+
+// [ch02-prim-ref]
+PrimRef make_prim_ref(const TriangleMesh& mesh, uint32_t i) {
+  // Non-finite vertices only give a non-finite box, which the builders leave out of the tree
+  // (such a triangle can never be hit). Box3f::extend follows the SIMD min/max rule, under
+  // which a NaN coordinate can vanish from a box: mark such a box as NaN outright.
+  const bool finite = is_finite(mesh.vertex(i, 0)) && is_finite(mesh.vertex(i, 1)) && is_finite(mesh.vertex(i, 2));
+  if (finite) return PrimRef(mesh.bounds(i), i);
   const float nan = std::numeric_limits<float>::quiet_NaN();
+  return PrimRef(Box3f(Vec3f(nan), Vec3f(nan)), i);
+}
+// [ch02-prim-ref]
+
+std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh) {
+  check_vertex_indices(mesh);
   std::vector<PrimRef> refs(mesh.size());
-  for (uint32_t i = 0; i < mesh.size(); ++i) {
-    const bool finite = is_finite(mesh.vertex(i, 0)) && is_finite(mesh.vertex(i, 1)) && is_finite(mesh.vertex(i, 2));
-    refs[i] = PrimRef(finite ? mesh.bounds(i) : Box3f(Vec3f(nan), Vec3f(nan)), i);
-  }
+  for (uint32_t i = 0; i < mesh.size(); ++i) refs[i] = make_prim_ref(mesh, i);
   return refs;
 }
 

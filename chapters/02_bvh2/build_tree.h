@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,17 @@ struct alignas(16) PrimRef {
   Vec3f center2() const { return lower + upper; }
 };
 static_assert(sizeof(PrimRef) == 32, "two 16-byte halves: lower+id, upper+unused");
+
+/// Whether all three vertex indices of triangle i lie within the mesh's vertex array.
+bool vertex_indices_valid(const TriangleMesh& mesh, size_t i);
+
+/// Throws std::invalid_argument, naming the triangle and the index, for the first triangle of
+/// [first, last) with a vertex index past the vertex array; returns when there is none.
+void check_vertex_indices(const TriangleMesh& mesh, size_t first = 0, size_t last = SIZE_MAX);
+
+/// The reference of triangle i, whose vertex indices must be valid: the triangle's box, or a
+/// NaN box when a vertex is NaN or infinite (no builder places it).
+PrimRef make_prim_ref(const TriangleMesh& mesh, uint32_t i);
 
 /// One reference per triangle of the mesh, in primID order. Zero-area triangles are kept (a
 /// triangle's primID never changes); they are simply never hit. A triangle with a NaN or

@@ -202,48 +202,81 @@ struct Prepared {
   Box3f bounds, centroids;
 };
 
-Prepared prepare(std::span<const PrimRef> input) {
-  const size_t n = input.size();
+// [ch04-prepare]
+/// Makes the builder's references in one parallel pass over blocks of the input, each block's
+/// bounds found as its references are written: `make_ref(block, i)` gives reference i. Where
+/// some cannot be placed (rare: a NaN or infinite vertex), a serial pass squeezes them out,
+/// keeping the order.
+template <class MakeRef>
+Prepared prepare(size_t n, MakeRef&& make_ref) {
   const size_t blocks = (n + kPartitionBlockPrims - 1) / kPartitionBlockPrims;
   std::vector<uint32_t> valid(blocks);
   std::vector<Box3f> bounds(blocks), centroids(blocks);
-  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
-    const size_t first = b * kPartitionBlockPrims, last = std::min(n, first + kPartitionBlockPrims);
-    for (size_t i = first; i < last; ++i) valid[b] += is_buildable(input[i]) ? 1 : 0;
-  });
   Prepared p;
-  size_t total = 0;
-  std::vector<size_t> offset(blocks);
-  for (size_t b = 0; b < blocks; ++b) offset[b] = total, total += valid[b];
-  p.count = uint32_t(total);
   // Raw storage, not a vector: every element is written below, so zeroing it first would be
   // a wasted pass over the largest array of the build.
   p.refs.reset(static_cast<PrimRef*>(
-      ::operator new(std::max<size_t>(total, 1) * sizeof(PrimRef), std::align_val_t(64))));
+      ::operator new(std::max<size_t>(n, 1) * sizeof(PrimRef), std::align_val_t(64))));
   PrimRef* out = p.refs.get();
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const size_t first = b * kPartitionBlockPrims, last = std::min(n, first + kPartitionBlockPrims);
-    size_t o = offset[b];
+    uint32_t v = 0;
     for (size_t i = first; i < last; ++i) {
-      if (!is_buildable(input[i])) continue;
-      PrimRef r = input[i];
+      PrimRef r = make_ref(b, i);
       r.lower = r.lower + Vec3f(0.0f);
       r.upper = r.upper + Vec3f(0.0f);
-      out[o++] = r;
+      out[i] = r;
+      if (!is_buildable(r)) continue;
+      ++v;
       bounds[b].extend(r.box());
       centroids[b].extend(centroid(r));
     }
+    valid[b] = v;
   });
-  for (size_t b = 0; b < blocks; ++b) p.bounds.extend(bounds[b]), p.centroids.extend(centroids[b]);
+  size_t total = 0;
+  for (size_t b = 0; b < blocks; ++b) {
+    total += valid[b];
+    p.bounds.extend(bounds[b]);
+    p.centroids.extend(centroids[b]);
+  }
+  if (total < n) {
+    size_t o = 0;
+    for (size_t i = 0; i < n; ++i)
+      if (is_buildable(out[i])) out[o++] = out[i];
+  }
+  p.count = uint32_t(total);
+  return p;
+}
+// [ch04-prepare]
+
+/// The references of a span, as given.
+Prepared prepare(std::span<const PrimRef> input) {
+  return prepare(input.size(), [&](size_t, size_t i) { return input[i]; });
+}
+
+/// The references of a mesh's triangles, made here rather than copied from make_prim_refs(): one
+/// parallel pass instead of a serial one and a copy. A triangle with a vertex index out of range
+/// is refused as make_prim_refs() refuses it, naming the first such triangle whatever the
+/// schedule (each block notes its first, and the first block with one decides).
+Prepared prepare(const TriangleMesh& mesh) {
+  const size_t n = mesh.size();
+  const size_t blocks = (n + kPartitionBlockPrims - 1) / kPartitionBlockPrims;
+  std::vector<size_t> first_bad(blocks, n);
+  Prepared p = prepare(n, [&](size_t b, size_t i) {
+    if (vertex_indices_valid(mesh, i)) return make_prim_ref(mesh, uint32_t(i));
+    first_bad[b] = std::min(first_bad[b], i);
+    return PrimRef(Box3f(Vec3f(std::numeric_limits<float>::quiet_NaN())), uint32_t(i));
+  });
+  for (size_t bad : first_bad)
+    if (bad < n) check_vertex_indices(mesh, bad, bad + 1);
   return p;
 }
 
 template <int N>
-BuildTree<N> build(std::span<const PrimRef> input, const SahBuildOptions& options,
+BuildTree<N> build(const Prepared& p, size_t input_size, const SahBuildOptions& options,
                    SahBuildStats* stats) {
   BuildTree<N> tree;
   Counters counters;
-  Prepared p = prepare(input);
   if (p.count > 0) {
     const PrimSet root = make_root_set(p.refs.get(), p.count, p.bounds, p.centroids, options);
     if (!root.wants_split) {
@@ -271,7 +304,7 @@ BuildTree<N> build(std::span<const PrimRef> input, const SahBuildOptions& option
   if (stats) {
     *stats = SahBuildStats{};
     stats->primitives = p.count;
-    stats->skipped = input.size() - p.count;
+    stats->skipped = input_size - p.count;
     stats->inner_nodes = counters.inner;
     stats->leaves = counters.leaves;
     stats->large_jobs = counters.large;
@@ -286,6 +319,18 @@ BuildTree<N> build(std::span<const PrimRef> input, const SahBuildOptions& option
 }  // namespace
 }  // namespace sah
 
+namespace {
+
+/// Runs `f` in an arena of `threads` threads, or in the caller's arena when `threads` is 0.
+template <class F>
+auto in_arena(int threads, F&& f) {
+  if (threads == 0) return f();
+  tbb::task_arena arena(threads);
+  return arena.execute(f);
+}
+
+}  // namespace
+
 template <int N>
 BuildTree<N> build_binned_sah(std::span<const PrimRef> refs, const SahBuildOptions& options,
                               SahBuildStats* stats) {
@@ -293,13 +338,27 @@ BuildTree<N> build_binned_sah(std::span<const PrimRef> refs, const SahBuildOptio
   check_sah_options(options, "build_binned_sah");
   if (refs.size() > size_t(std::numeric_limits<uint32_t>::max()) - 1)
     throw std::length_error("build_binned_sah: more than 2^32 - 2 primitive references");
-  if (options.threads == 0) return sah::build<N>(refs, options, stats);
-  tbb::task_arena arena(options.threads);
-  return arena.execute([&] { return sah::build<N>(refs, options, stats); });
+  return in_arena(options.threads,
+                  [&] { return sah::build<N>(sah::prepare(refs), refs.size(), options, stats); });
+}
+
+template <int N>
+BuildTree<N> build_binned_sah(const TriangleMesh& mesh, const SahBuildOptions& options,
+                              SahBuildStats* stats) {
+  static_assert(N == 2 || N == 4 || N == 8 || N == 16, "nodes of 2, 4, 8 or 16 children");
+  check_sah_options(options, "build_binned_sah");
+  if (mesh.size() > size_t(std::numeric_limits<uint32_t>::max()) - 1)
+    throw std::length_error("build_binned_sah: more than 2^32 - 2 triangles");
+  return in_arena(options.threads,
+                  [&] { return sah::build<N>(sah::prepare(mesh), mesh.size(), options, stats); });
 }
 
 template BuildTree<2> build_binned_sah<2>(std::span<const PrimRef>, const SahBuildOptions&,
                                           SahBuildStats*);
+template BuildTree<2> build_binned_sah<2>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
+template BuildTree<4> build_binned_sah<4>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
+template BuildTree<8> build_binned_sah<8>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
+template BuildTree<16> build_binned_sah<16>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
 template BuildTree<4> build_binned_sah<4>(std::span<const PrimRef>, const SahBuildOptions&,
                                           SahBuildStats*);
 template BuildTree<8> build_binned_sah<8>(std::span<const PrimRef>, const SahBuildOptions&,

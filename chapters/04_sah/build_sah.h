@@ -28,6 +28,14 @@ template <int N>
 BuildTree<N> build_binned_sah(std::span<const PrimRef> refs, const SahBuildOptions& options = {},
                               SahBuildStats* stats = nullptr);
 
+/// The same tree as build_binned_sah(make_prim_refs(mesh), options, stats), with the
+/// references made by the builder's first parallel pass instead of a serial one and a copy.
+/// Throws as make_prim_refs() does for a vertex index out of range (naming the first such
+/// triangle), and as the other overload for invalid options.
+template <int N>
+BuildTree<N> build_binned_sah(const TriangleMesh& mesh, const SahBuildOptions& options = {},
+                              SahBuildStats* stats = nullptr);
+
 extern template BuildTree<2> build_binned_sah<2>(std::span<const PrimRef>, const SahBuildOptions&,
                                                  SahBuildStats*);
 extern template BuildTree<4> build_binned_sah<4>(std::span<const PrimRef>, const SahBuildOptions&,
@@ -35,6 +43,11 @@ extern template BuildTree<4> build_binned_sah<4>(std::span<const PrimRef>, const
 extern template BuildTree<8> build_binned_sah<8>(std::span<const PrimRef>, const SahBuildOptions&,
                                                  SahBuildStats*);
 extern template BuildTree<16> build_binned_sah<16>(std::span<const PrimRef>, const SahBuildOptions&,
+                                                   SahBuildStats*);
+extern template BuildTree<2> build_binned_sah<2>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
+extern template BuildTree<4> build_binned_sah<4>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
+extern template BuildTree<8> build_binned_sah<8>(const TriangleMesh&, const SahBuildOptions&, SahBuildStats*);
+extern template BuildTree<16> build_binned_sah<16>(const TriangleMesh&, const SahBuildOptions&,
                                                    SahBuildStats*);
 
 }  // namespace rtk

@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -91,3 +94,51 @@ TEST_CASE("ch04: negative zeros do not make the bounds depend on the schedule") 
   CHECK(test::identical(one, two));
   CHECK(std::signbit(one.root.box.lower.x) == false);
 }
+
+// [ch04-test-from-mesh]
+TEST_CASE_TEMPLATE("ch04: a tree built from the mesh is the tree built from its references", W,
+                   std::integral_constant<int, 4>, std::integral_constant<int, 8>) {
+  constexpr int N = W::value;
+  // Several blocks of references, zero-area triangles, and triangles with NaN and infinite
+  // vertices in different blocks (left out, so the references must be squeezed together).
+  TriangleMesh mesh = test::make_random_soup(int(2 * kLargeJobPrims + 3000), 37);
+  test::add_degenerate_triangles(mesh, 500, 38);
+  const float nan = std::numeric_limits<float>::quiet_NaN(),
+              inf = std::numeric_limits<float>::infinity();
+  for (const size_t t : {size_t(5), size_t(kPartitionBlockPrims + 7), mesh.size() - 1})
+    mesh.vertices[mesh.triangles[t][1]] = Vec3f(nan, 0.0f, 0.0f);
+  mesh.vertices[mesh.triangles[3 * kPartitionBlockPrims][0]].z = inf;
+  const std::vector<PrimRef> refs = make_prim_refs(mesh);
+  for (const int threads : {1, 2}) {
+    SahBuildOptions options;
+    options.threads = threads;
+    SahBuildStats from_refs, from_mesh;
+    const BuildTree<N> a = build_binned_sah<N>(refs, options, &from_refs);
+    const BuildTree<N> b = build_binned_sah<N>(mesh, options, &from_mesh);
+    CHECK(from_mesh.skipped == 4);
+    CHECK(test::check_tree(b, refs, options.max_leaf_size) == "");
+    CHECK(test::identical(a, b));
+    CHECK(same_stats(from_refs, from_mesh));
+  }
+}
+
+TEST_CASE("ch04: a vertex index out of range is refused, naming the first such triangle") {
+  TriangleMesh mesh = test::make_random_soup(int(3 * kPartitionBlockPrims), 39);
+  const uint32_t past = uint32_t(mesh.vertices.size());
+  // The later block's triangle may well be seen first on two threads; the message is the same.
+  mesh.triangles[2 * kPartitionBlockPrims + 1][2] = past + 5;
+  mesh.triangles[kPartitionBlockPrims + 3][0] = past;
+  std::string expected;
+  try {
+    make_prim_refs(mesh);
+  } catch (const std::invalid_argument& e) {
+    expected = e.what();
+  }
+  REQUIRE(expected.find("triangle " + std::to_string(kPartitionBlockPrims + 3)) == 0);
+  for (const int threads : {1, 2}) {
+    SahBuildOptions options;
+    options.threads = threads;
+    CHECK_THROWS_WITH_AS(build_binned_sah<8>(mesh, options), expected.c_str(), std::invalid_argument);
+  }
+}
+// [ch04-test-from-mesh]

@@ -17,7 +17,7 @@ template <int N>
 LayoutBVH<N> build_layout_bvh(const TriangleMesh& mesh, TriangleLayout layout, int threads) {
   SahBuildOptions options = sah_options_for(layout);
   options.threads = threads;
-  return make_layout_bvh<N>(build_binned_sah<N>(make_prim_refs(mesh), options), mesh, layout,
+  return make_layout_bvh<N>(build_binned_sah<N>(mesh, options), mesh, layout,
                             threads);
 }
 

@@ -23,7 +23,7 @@ BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, int threa
     options.sah = sah;
     return build_spatial_sah<N>(mesh, options);
   } else {
-    return build_binned_sah<N>(make_prim_refs(mesh), sah);
+    return build_binned_sah<N>(mesh, sah);
   }
 }
 
