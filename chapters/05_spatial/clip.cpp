@@ -47,16 +47,48 @@ Polygon clip_plane(const Polygon& in, int axis, double d, bool keep_below) {
 }
 // [ch05-clip-plane]
 
+// [ch05-split-plane]
+/// Cuts `in` at the plane coordinate[axis] = d into the part below and the part above: what
+/// clip_plane() keeps on each side, bit for bit, in one walk around the polygon, each crossing
+/// point computed once for both sides.
+void split_plane(const Polygon& in, int axis, double d, Polygon& below, Polygon& above) {
+  below.n = above.n = 0;
+  for (int i = 0; i < in.n; ++i) {
+    const auto& p = in.v[i];
+    const auto& q = in.v[(i + 1) % in.n];
+    const bool p_below = p[axis] <= d, q_below = q[axis] <= d;
+    const bool p_above = p[axis] >= d, q_above = q[axis] >= d;
+    if (p_below) below.v[below.n++] = p;
+    if (p_above) above.v[above.n++] = p;
+    const bool cross_below = p_below != q_below, cross_above = p_above != q_above;
+    if (cross_below || cross_above) {
+      const auto& s = p[axis] < q[axis] ? p : q;
+      const auto& e = p[axis] < q[axis] ? q : p;
+      const double t = (d - s[axis]) / (e[axis] - s[axis]);
+      // Each coordinate in a register of its own: a point written coordinate by coordinate
+      // and then copied whole would be read back before the processor can forward the stores.
+      auto at = [&](int k) { return k == axis ? d : s[k] + t * (e[k] - s[k]); };
+      const std::array<double, 3> x{at(0), at(1), at(2)};
+      if (cross_below) below.v[below.n++] = x;
+      if (cross_above) above.v[above.n++] = x;
+    }
+  }
+}
+// [ch05-split-plane]
+
 /// The largest float not above `d`, and the smallest not below it (d finite and within float
-/// range: the clipped points lie between the triangle's float vertices). One float step is
-/// taken on the bits, without a libm call.
+/// range: the clipped points lie between the triangle's float vertices). The nearest float is
+/// above `d` about half the time, at random, so the step down is computed always and chosen
+/// by a select rather than a branch that would be mispredicted that often: one float step on
+/// the bits (down for a positive float, up for a negative one, from zero to the smallest
+/// negative float), without a libm call.
 float round_down(double d) {
   const float f = float(d);
-  if (double(f) <= d) return f;
-  const uint32_t bits = std::bit_cast<uint32_t>(f);
-  if (f > 0.0f) return std::bit_cast<float>(bits - 1);
-  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
-  return std::bit_cast<float>(bits + 1);
+  const uint32_t bits = std::bit_cast<uint32_t>(f), sign = bits >> 31;
+  // Selects written as masks: the compiler turns a ternary on these compares back into branches.
+  auto select = [](bool take_b, uint32_t a, uint32_t b) { return a ^ ((a ^ b) & (0u - uint32_t(take_b))); };
+  const uint32_t step = select((bits & 0x7fffffffu) == 0, bits - 1 + 2 * sign, 0x80000001u);
+  return std::bit_cast<float>(select(double(f) > d, bits, step));
 }
 float round_up(double d) { return -round_down(-d); }
 
@@ -65,7 +97,6 @@ bool finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y) &&
 /// The polygon's bounds, rounded outwards to floats and kept inside `box`.
 Box3f bounds_in(const Polygon& poly, const Box3f& box) {
   if (poly.n == 0) return {};
-  Box3f out;
   std::array<double, 3> low = poly.v[0], high = poly.v[0];
   for (int i = 1; i < poly.n; ++i)
     for (int axis = 0; axis < 3; ++axis) {
@@ -73,13 +104,11 @@ Box3f bounds_in(const Polygon& poly, const Box3f& box) {
       low[axis] = x < low[axis] ? x : low[axis];
       high[axis] = x > high[axis] ? x : high[axis];
     }
-  for (int axis = 0; axis < 3; ++axis) {
-    const double lo = low[axis], hi = high[axis];
-    // (+ 0.0f turns a negative zero into a positive one, as chapter 4's builder expects.)
-    out.lower[axis] = std::max(round_down(lo), box.lower[axis]) + 0.0f;
-    out.upper[axis] = std::min(round_up(hi), box.upper[axis]) + 0.0f;
-  }
-  return out;
+  // (+ 0.0f turns a negative zero into a positive one, as chapter 4's builder expects.) The
+  // corners are made whole, not written axis by axis, for the reason given in split_plane().
+  auto lower = [&](int k) { return std::max(round_down(low[k]), box.lower[k]) + 0.0f; };
+  auto upper = [&](int k) { return std::min(round_up(high[k]), box.upper[k]) + 0.0f; };
+  return {Vec3f(lower(0), lower(1), lower(2)), Vec3f(upper(0), upper(1), upper(2))};
 }
 
 bool usable(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {
@@ -104,17 +133,21 @@ Polygon clip_to_box(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f&
 void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box, int axis,
                    std::span<const float> planes, std::span<Box3f> out) {
   if (!usable(a, b, c, box) || out.size() != planes.size() + 1) return;
-  Polygon rest = clip_to_box(a, b, c, box);
+  // Two polygons in turn hold what is left above the planes cut so far.
+  std::array<Polygon, 2> rest{clip_to_box(a, b, c, box), Polygon{}};
+  int cur = 0;
+  Polygon piece;
   Box3f slab = box;
-  for (size_t i = 0; i < planes.size() && rest.n > 0; ++i) {
+  for (size_t i = 0; i < planes.size() && rest[cur].n > 0; ++i) {
     const float p = std::clamp(planes[i], box.lower[axis], box.upper[axis]);
     slab.upper[axis] = p;
-    out[i].extend(bounds_in(clip_plane(rest, axis, double(p), true), slab));
-    rest = clip_plane(rest, axis, double(p), false);
+    split_plane(rest[cur], axis, double(p), piece, rest[1 - cur]);
+    out[i].extend(bounds_in(piece, slab));
+    cur = 1 - cur;
     slab.lower[axis] = p;
   }
   slab.upper[axis] = box.upper[axis];
-  out[planes.size()].extend(bounds_in(rest, slab));
+  out[planes.size()].extend(bounds_in(rest[cur], slab));
 }
 
 Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {
@@ -130,9 +163,9 @@ std::pair<Box3f, Box3f> split_triangle_box(const Vec3f& a, const Vec3f& b, const
   above.lower[axis] = std::max(box.lower[axis], pos);
   if (below.empty() || above.empty()) return {clip_triangle(a, b, c, below), clip_triangle(a, b, c, above)};
   // Clip to the box once, then cut the polygon at the plane.
-  const Polygon poly = clip_to_box(a, b, c, box);
-  return {bounds_in(clip_plane(poly, axis, double(pos), true), below),
-          bounds_in(clip_plane(poly, axis, double(pos), false), above)};
+  Polygon part_below, part_above;
+  split_plane(clip_to_box(a, b, c, box), axis, double(pos), part_below, part_above);
+  return {bounds_in(part_below, below), bounds_in(part_above, above)};
 }
 
 }  // namespace rtk

@@ -2,9 +2,11 @@
 // dense sampling of the triangle.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "05_spatial/clip.h"
 
@@ -111,3 +113,36 @@ TEST_CASE("ch05: clipped bounds contain every sampled point of the triangle in t
   }
   CHECK(nonempty > 50);
 }
+
+// [ch05-test-chop]
+TEST_CASE("ch05: chopping at many planes gives each slab the bounds of clipping to that slab") {
+  std::mt19937 gen(503);
+  std::uniform_real_distribution<float> u(-1.0f, 2.0f);
+  int pieces = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Vec3f a{u(gen), u(gen), u(gen)}, b{u(gen), u(gen), u(gen)}, c{u(gen), u(gen), u(gen)};
+    Box3f box(Vec3f(u(gen), u(gen), u(gen)));
+    box.extend(Vec3f(u(gen), u(gen), u(gen)));
+    const int axis = trial % 3;
+    // Up to eight sorted planes across the box (some may fall outside the triangle).
+    std::vector<float> planes(size_t(1 + trial % 8));
+    for (float& p : planes) p = box.lower[axis] + (box.upper[axis] - box.lower[axis]) * (u(gen) + 1.0f) / 3.0f;
+    std::sort(planes.begin(), planes.end());
+    std::vector<Box3f> out(planes.size() + 1);
+    chop_triangle(a, b, c, box, axis, planes, out);
+    for (size_t i = 0; i < out.size(); ++i) {
+      Box3f slab = box;
+      if (i > 0) slab.lower[axis] = planes[i - 1];
+      if (i < planes.size()) slab.upper[axis] = planes[i];
+      const Box3f expected = clip_triangle(a, b, c, slab);
+      CHECK(out[i].empty() == expected.empty());
+      if (!expected.empty()) {
+        ++pieces;
+        CHECK(same(out[i], expected));
+        CHECK(slab.contains(out[i]));
+      }
+    }
+  }
+  CHECK(pieces > 200);
+}
+// [ch05-test-chop]
