@@ -20,6 +20,22 @@ bool same(const Box3f& a, const Box3f& b, float eps = 1e-6f) {
   return true;
 }
 
+/// A random triangle and a random box, every coordinate in [-1, 2).
+struct TriangleAndBox {
+  Vec3f a, b, c;
+  Box3f box;
+};
+TriangleAndBox random_triangle_and_box(std::mt19937& gen) {
+  std::uniform_real_distribution<float> u(-1.0f, 2.0f);
+  TriangleAndBox t;
+  t.a = {u(gen), u(gen), u(gen)};
+  t.b = {u(gen), u(gen), u(gen)};
+  t.c = {u(gen), u(gen), u(gen)};
+  t.box = Box3f(Vec3f{u(gen), u(gen), u(gen)});
+  t.box.extend(Vec3f{u(gen), u(gen), u(gen)});
+  return t;
+}
+
 }  // namespace
 
 TEST_CASE("ch05: a triangle inside the box keeps its own bounds") {
@@ -80,12 +96,9 @@ TEST_CASE("ch05: huge coordinates clip without overflow") {
 
 TEST_CASE("ch05: clipped bounds contain every sampled point of the triangle in the box, tightly") {
   std::mt19937 gen(501);
-  std::uniform_real_distribution<float> u(-1.0f, 2.0f);
   int nonempty = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const Vec3f a{u(gen), u(gen), u(gen)}, b{u(gen), u(gen), u(gen)}, c{u(gen), u(gen), u(gen)};
-    Box3f box(Vec3f(u(gen), u(gen), u(gen)));
-    box.extend(Vec3f(u(gen), u(gen), u(gen)));
+    const auto [a, b, c, box] = random_triangle_and_box(gen);
     const Box3f r = clip_triangle(a, b, c, box);
     CHECK((r.empty() || box.contains(r)));
     CHECK((r.empty() || (Box3f(a).extend(b).extend(c)).contains(r)));
@@ -120,9 +133,7 @@ TEST_CASE("ch05: chopping at many planes gives each slab the bounds of clipping 
   std::uniform_real_distribution<float> u(-1.0f, 2.0f);
   int pieces = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    const Vec3f a{u(gen), u(gen), u(gen)}, b{u(gen), u(gen), u(gen)}, c{u(gen), u(gen), u(gen)};
-    Box3f box(Vec3f(u(gen), u(gen), u(gen)));
-    box.extend(Vec3f(u(gen), u(gen), u(gen)));
+    const auto [a, b, c, box] = random_triangle_and_box(gen);
     const int axis = trial % 3;
     // Up to eight sorted planes across the box (some may fall outside the triangle).
     std::vector<float> planes(size_t(1 + trial % 8));
