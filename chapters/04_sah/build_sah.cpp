@@ -43,6 +43,17 @@ struct Counters {
   std::atomic<size_t> inner{0}, leaves{0}, large{0}, medium{0}, small{0}, fallback{0}, rotations{0};
 };
 
+/// What one job counts as it goes, added to the shared Counters once when it is done: an atomic
+/// add at every leaf and split would make the threads take the counters' cache line from each
+/// other thousands of times per build.
+struct JobCounts {
+  size_t leaves = 0, fallback = 0;
+  void add_to(Counters& c) const {
+    c.leaves += leaves;
+    c.fallback += fallback;
+  }
+};
+
 template <int N>
 class Builder {
  public:
@@ -65,18 +76,18 @@ class Builder {
 
  private:
   /// Fills one node with the skeleton of node_filling.h; a split is split_set() below.
-  int fill_node(const PrimSet& set, std::array<PrimSet, N>& kids, int depth) {
+  int fill_node(const PrimSet& set, std::array<PrimSet, N>& kids, int depth, JobCounts& counts) {
     return sah::fill_node<N>(set, kids, depth, options_.max_leaf_size, [&](PrimSet chosen, bool median) {
       if (median) chosen.split = Split{};  // split_set() then cuts the range in the middle
       bool fallback = false;
       auto halves = split_set(chosen, refs_, options_, fallback);
-      counters_.fallback += fallback ? 1 : 0;
+      counts.fallback += fallback ? 1 : 0;
       return halves;
     });
   }
 
-  Child leaf(const PrimSet& s) {
-    ++counters_.leaves;
+  Child leaf(const PrimSet& s, JobCounts& counts) {
+    ++counts.leaves;
     Child c;
     c.box = s.bounds;
     c.index = s.begin;
@@ -90,9 +101,12 @@ class Builder {
   std::unique_ptr<Fragment<N>> build_small(const PrimSet& root, int depth) {
     auto fragment = std::make_unique<Fragment<N>>();
     auto& nodes = fragment->nodes;
+    JobCounts counts;
     build_depth_first<N>(
-        nodes, root, depth, [&](const PrimSet& set, auto& kids, int d) { return fill_node(set, kids, d); },
-        [&](const PrimSet& set) { return leaf(set); });
+        nodes, root, depth,
+        [&](const PrimSet& set, auto& kids, int d) { return fill_node(set, kids, d, counts); },
+        [&](const PrimSet& set) { return leaf(set, counts); });
+    counts.add_to(counters_);
     // Tree rotations
     if (options_.rotations) {
       const size_t applied = rotate_tree<N>(nodes, kRotationRounds);
@@ -116,14 +130,15 @@ class Builder {
     auto fragment = std::make_unique<Fragment<N>>();
     fragment->upper = true;
     std::array<PrimSet, N> kids;
-    const int k = fill_node(set, kids, depth);
+    JobCounts counts;
+    const int k = fill_node(set, kids, depth, counts);
     ++(set.size() >= kLargeJobPrims ? counters_.large : counters_.medium);
     Node& node = fragment->nodes.emplace_back();
     node.num_children = k;
     tbb::task_group tasks;
     for (int i = 0; i < k; ++i) {
       if (!kids[i].wants_split) {
-        node.children[i] = leaf(kids[i]);
+        node.children[i] = leaf(kids[i], counts);
         continue;
       }
       node.children[i].box = kids[i].bounds;
@@ -132,6 +147,7 @@ class Builder {
           [this, &fragment, &kids, i, depth] { fragment->sub[i] = build_job(kids[i], depth + 1); });
     }
     tasks.wait();
+    counts.add_to(counters_);
     fragment->total = 1;
     for (const auto& sub : fragment->sub) fragment->total += sub ? sub->total : 0;
     ++counters_.inner;
