@@ -38,6 +38,18 @@ RTK_INLINE void prefetch_l1(const void* address) { __builtin_prefetch(address, 0
 /// Number of set bits.
 RTK_INLINE int pop_count(uint32_t mask) { return std::popcount(mask); }
 
+/// `take_b ? b : a`, by masks rather than a branch. For a condition that depends on random data
+/// (which side of a plane, which axis is nearer) a branch is mispredicted about half the time,
+/// and compilers turn a plain `?:` of such a condition back into a branch when they judge it
+/// cheaper.
+RTK_INLINE uint32_t select_bits(bool take_b, uint32_t a, uint32_t b) {
+  return a ^ ((a ^ b) & (0u - uint32_t(take_b)));
+}
+/// The same for floats, on their bits.
+RTK_INLINE float select_bits(bool take_b, float a, float b) {
+  return std::bit_cast<float>(select_bits(take_b, std::bit_cast<uint32_t>(a), std::bit_cast<uint32_t>(b)));
+}
+
 /// Iterates over the indices of the set bits of a mask, lowest first:
 /// `for (int i : set_bits(movemask(hit))) ...`.
 class set_bits {

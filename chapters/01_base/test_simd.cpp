@@ -408,3 +408,14 @@ TEST_CASE("ch01: the self-test table refuses what it cannot do") {
                     std::invalid_argument);
   }
 }
+
+TEST_CASE("ch01: select_bits picks the second value exactly when asked, bit for bit") {
+  CHECK(rtk::select_bits(false, 7u, 9u) == 7u);
+  CHECK(rtk::select_bits(true, 7u, 9u) == 9u);
+  CHECK(rtk::select_bits(true, 0u, 0xffffffffu) == 0xffffffffu);
+  // Floats keep their bits: a negative zero and a NaN's payload come through unchanged.
+  const float nan = std::bit_cast<float>(0x7fc01234u);
+  CHECK(std::bit_cast<uint32_t>(rtk::select_bits(true, 1.0f, -0.0f)) == 0x80000000u);
+  CHECK(std::bit_cast<uint32_t>(rtk::select_bits(false, nan, 2.0f)) == 0x7fc01234u);
+  CHECK(rtk::select_bits(false, 1.5f, -3.0f) == 1.5f);
+}

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "01_base/platform.h"
+
 namespace rtk {
 
 namespace {
@@ -85,10 +87,8 @@ void split_plane(const Polygon& in, int axis, double d, Polygon& below, Polygon&
 float round_down(double d) {
   const float f = float(d);
   const uint32_t bits = std::bit_cast<uint32_t>(f), sign = bits >> 31;
-  // Selects written as masks: the compiler turns a ternary on these compares back into branches.
-  auto select = [](bool take_b, uint32_t a, uint32_t b) { return a ^ ((a ^ b) & (0u - uint32_t(take_b))); };
-  const uint32_t step = select((bits & 0x7fffffffu) == 0, bits - 1 + 2 * sign, 0x80000001u);
-  return std::bit_cast<float>(select(double(f) > d, bits, step));
+  const uint32_t step = select_bits((bits & 0x7fffffffu) == 0, bits - 1 + 2 * sign, 0x80000001u);
+  return std::bit_cast<float>(select_bits(double(f) > d, bits, step));
 }
 float round_up(double d) { return -round_down(-d); }
 

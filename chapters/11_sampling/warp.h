@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "01_base/platform.h"
 #include "01_base/vec3.h"
 #include "11_sampling/vec2.h"
 
@@ -42,11 +43,11 @@ inline Vec2f sample_uniform_disk(Vec2f u) {
   // The angle from the x axis when |a| > |b|, else from the y axis. Which one it is depends on
   // the random point, so it is chosen by selects rather than by a branch that would be
   // mispredicted half the time; the arithmetic is the same either way.
-  const bool from_x = std::fabs(a) > std::fabs(b);
-  const float r = from_x ? a : b, other = from_x ? b : a;
+  const bool from_y = !(std::fabs(a) > std::fabs(b));
+  const float r = select_bits(from_y, a, b), other = select_bits(from_y, b, a);
   const Vec2f cs = cos_sin_quarter((kPi / 4.0f) * (other / r));
   const float along = r * cs.x, across = r * cs.y;
-  return {from_x ? along : across, from_x ? across : along};
+  return {select_bits(from_y, along, across), select_bits(from_y, across, along)};
 }
 /// The density of sample_uniform_disk on the disk: 1 / pi.
 inline constexpr float pdf_uniform_disk() { return kInvPi; }
