@@ -337,12 +337,20 @@ BuildTree<N> build(const Prepared& p, size_t input_size, const SahBuildOptions& 
 
 namespace {
 
-/// Runs `f` in an arena of `threads` threads, or in the caller's arena when `threads` is 0.
-template <class F>
-auto in_arena(int threads, F&& f) {
-  if (threads == 0) return f();
-  tbb::task_arena arena(threads);
-  return arena.execute(f);
+/// What both entry points do: refuse invalid options and more than 2^32 - 2 inputs (`what`),
+/// then prepare the references and build, in an arena of options.threads threads (0: the
+/// caller's).
+template <int N, class Prepare>
+BuildTree<N> checked_build(size_t count, const char* what, const SahBuildOptions& options,
+                           SahBuildStats* stats, Prepare&& prepare) {
+  static_assert(N == 2 || N == 4 || N == 8 || N == 16, "nodes of 2, 4, 8 or 16 children");
+  check_sah_options(options, "build_binned_sah");
+  if (count > size_t(std::numeric_limits<uint32_t>::max()) - 1)
+    throw std::length_error(std::string("build_binned_sah: more than 2^32 - 2 ") + what);
+  auto build = [&] { return sah::build<N>(prepare(), count, options, stats); };
+  if (options.threads == 0) return build();
+  tbb::task_arena arena(options.threads);
+  return arena.execute(build);
 }
 
 }  // namespace
@@ -350,23 +358,14 @@ auto in_arena(int threads, F&& f) {
 template <int N>
 BuildTree<N> build_binned_sah(std::span<const PrimRef> refs, const SahBuildOptions& options,
                               SahBuildStats* stats) {
-  static_assert(N == 2 || N == 4 || N == 8 || N == 16, "nodes of 2, 4, 8 or 16 children");
-  check_sah_options(options, "build_binned_sah");
-  if (refs.size() > size_t(std::numeric_limits<uint32_t>::max()) - 1)
-    throw std::length_error("build_binned_sah: more than 2^32 - 2 primitive references");
-  return in_arena(options.threads,
-                  [&] { return sah::build<N>(sah::prepare(refs), refs.size(), options, stats); });
+  return checked_build<N>(refs.size(), "primitive references", options, stats,
+                          [&] { return sah::prepare(refs); });
 }
 
 template <int N>
 BuildTree<N> build_binned_sah(const TriangleMesh& mesh, const SahBuildOptions& options,
                               SahBuildStats* stats) {
-  static_assert(N == 2 || N == 4 || N == 8 || N == 16, "nodes of 2, 4, 8 or 16 children");
-  check_sah_options(options, "build_binned_sah");
-  if (mesh.size() > size_t(std::numeric_limits<uint32_t>::max()) - 1)
-    throw std::length_error("build_binned_sah: more than 2^32 - 2 triangles");
-  return in_arena(options.threads,
-                  [&] { return sah::build<N>(sah::prepare(mesh), mesh.size(), options, stats); });
+  return checked_build<N>(mesh.size(), "triangles", options, stats, [&] { return sah::prepare(mesh); });
 }
 
 template BuildTree<2> build_binned_sah<2>(std::span<const PrimRef>, const SahBuildOptions&,

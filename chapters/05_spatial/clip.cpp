@@ -22,47 +22,23 @@ struct Polygon {
 };
 
 // [ch05-clip-plane]
-/// Keeps the part of `in` on one side of the plane coordinate[axis] = d: below it (keep_below)
-/// or above it. A vertex on the plane is kept. Where an edge crosses, the new vertex gets the
-/// plane's coordinate exactly, and the other two are interpolated from the edge's endpoints
-/// taken in a fixed order (lower coordinate first), so that two neighbouring clips of one edge
-/// compute the same point bit for bit.
-Polygon clip_plane(const Polygon& in, int axis, double d, bool keep_below) {
-  Polygon out;
-  auto inside = [&](const std::array<double, 3>& p) { return keep_below ? p[axis] <= d : p[axis] >= d; };
-  for (int i = 0; i < in.n; ++i) {
-    const auto& p = in.v[i];
-    const auto& q = in.v[(i + 1) % in.n];
-    const bool p_in = inside(p), q_in = inside(q);
-    if (p_in) out.v[out.n++] = p;
-    if (p_in != q_in) {
-      const auto& s = p[axis] < q[axis] ? p : q;
-      const auto& e = p[axis] < q[axis] ? q : p;
-      const double t = (d - s[axis]) / (e[axis] - s[axis]);
-      std::array<double, 3> x;
-      for (int k = 0; k < 3; ++k) x[k] = s[k] + t * (e[k] - s[k]);
-      x[axis] = d;
-      out.v[out.n++] = x;
-    }
-  }
-  return out;
-}
-// [ch05-clip-plane]
-
-// [ch05-split-plane]
-/// Cuts `in` at the plane coordinate[axis] = d into the part below and the part above: what
-/// clip_plane() keeps on each side, bit for bit, in one walk around the polygon, each crossing
-/// point computed once for both sides.
-void split_plane(const Polygon& in, int axis, double d, Polygon& below, Polygon& above) {
-  below.n = above.n = 0;
+/// Cuts `in` at the plane coordinate[axis] = d: the part below it goes to `below`, the part
+/// above it to `above` (either may be null when only one side is wanted). A vertex on the plane
+/// belongs to both. Where an edge crosses, the new vertex gets the plane's coordinate exactly,
+/// and the other two are interpolated from the edge's endpoints taken in a fixed order (lower
+/// coordinate first), so that two neighbouring clips of one edge compute the same point bit
+/// for bit; a point both sides need is computed once.
+void split_plane(const Polygon& in, int axis, double d, Polygon* below, Polygon* above) {
+  if (below) below->n = 0;
+  if (above) above->n = 0;
   for (int i = 0; i < in.n; ++i) {
     const auto& p = in.v[i];
     const auto& q = in.v[(i + 1) % in.n];
     const bool p_below = p[axis] <= d, q_below = q[axis] <= d;
     const bool p_above = p[axis] >= d, q_above = q[axis] >= d;
-    if (p_below) below.v[below.n++] = p;
-    if (p_above) above.v[above.n++] = p;
-    const bool cross_below = p_below != q_below, cross_above = p_above != q_above;
+    if (below && p_below) below->v[below->n++] = p;
+    if (above && p_above) above->v[above->n++] = p;
+    const bool cross_below = below && p_below != q_below, cross_above = above && p_above != q_above;
     if (cross_below || cross_above) {
       const auto& s = p[axis] < q[axis] ? p : q;
       const auto& e = p[axis] < q[axis] ? q : p;
@@ -71,12 +47,12 @@ void split_plane(const Polygon& in, int axis, double d, Polygon& below, Polygon&
       // and then copied whole would be read back before the processor can forward the stores.
       auto at = [&](int k) { return k == axis ? d : s[k] + t * (e[k] - s[k]); };
       const std::array<double, 3> x{at(0), at(1), at(2)};
-      if (cross_below) below.v[below.n++] = x;
-      if (cross_above) above.v[above.n++] = x;
+      if (cross_below) below->v[below->n++] = x;
+      if (cross_above) above->v[above->n++] = x;
     }
   }
 }
-// [ch05-split-plane]
+// [ch05-clip-plane]
 
 /// The largest float not above `d`, and the smallest not below it (d finite and within float
 /// range: the clipped points lie between the triangle's float vertices). The nearest float is
@@ -121,9 +97,10 @@ Polygon clip_to_box(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f&
   Polygon poly;
   for (const Vec3f& p : {a, b, c}) poly.v[poly.n++] = {double(p.x), double(p.y), double(p.z)};
   if (box.contains(a) && box.contains(b) && box.contains(c)) return poly;
+  Polygon above_lower;
   for (int axis = 0; axis < 3 && poly.n > 0; ++axis) {
-    poly = clip_plane(poly, axis, double(box.lower[axis]), false);
-    if (poly.n > 0) poly = clip_plane(poly, axis, double(box.upper[axis]), true);
+    split_plane(poly, axis, double(box.lower[axis]), nullptr, &above_lower);
+    split_plane(above_lower, axis, double(box.upper[axis]), &poly, nullptr);
   }
   return poly;
 }
@@ -141,7 +118,7 @@ void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& 
   for (size_t i = 0; i < planes.size() && rest[cur].n > 0; ++i) {
     const float p = std::clamp(planes[i], box.lower[axis], box.upper[axis]);
     slab.upper[axis] = p;
-    split_plane(rest[cur], axis, double(p), piece, rest[1 - cur]);
+    split_plane(rest[cur], axis, double(p), &piece, &rest[1 - cur]);
     out[i].extend(bounds_in(piece, slab));
     cur = 1 - cur;
     slab.lower[axis] = p;
@@ -164,7 +141,7 @@ std::pair<Box3f, Box3f> split_triangle_box(const Vec3f& a, const Vec3f& b, const
   if (below.empty() || above.empty()) return {clip_triangle(a, b, c, below), clip_triangle(a, b, c, above)};
   // Clip to the box once, then cut the polygon at the plane.
   Polygon part_below, part_above;
-  split_plane(clip_to_box(a, b, c, box), axis, double(pos), part_below, part_above);
+  split_plane(clip_to_box(a, b, c, box), axis, double(pos), &part_below, &part_above);
   return {bounds_in(part_below, below), bounds_in(part_above, above)};
 }
 
