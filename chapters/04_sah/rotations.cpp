@@ -57,7 +57,7 @@ int height_of(const typename BuildTree<N>::Child& c, const std::vector<int>& hei
 // [ch04-rotate]
 template <int N>
 bool rotate_at(std::vector<typename BuildTree<N>::Node>& nodes, std::vector<int>& height,
-               uint32_t x, std::vector<uint64_t>& changed, uint64_t& clock) {
+               uint32_t x, std::vector<uint64_t>& changed, uint64_t& clock, bool price_every_swap) {
   auto& node = nodes[x];
   const int k = node.num_children;
   // For every inner child p and each of its slots l: the box of p's children without l, and
@@ -105,7 +105,7 @@ bool rotate_at(std::vector<typename BuildTree<N>::Node>& nodes, std::vector<int>
     if (node.children[p].is_leaf()) continue;
     const auto& inner = nodes[node.children[p].index];
     const double old_area = area[p];
-    const bool quick = quick_estimate(old_area);
+    const bool quick = !price_every_swap && quick_estimate(old_area);
     const float fast_old = float(old_area);
     for (int c = 0; c < k; ++c) {
       if (c == p) continue;
@@ -131,7 +131,7 @@ bool rotate_at(std::vector<typename BuildTree<N>::Node>& nodes, std::vector<int>
       if (node.children[q].is_leaf()) continue;
       const auto& b = nodes[node.children[q].index];
       const double old_area = area[p] + area[q];
-      const bool quick = quick_estimate(old_area);
+      const bool quick = !price_every_swap && quick_estimate(old_area);
       const float fast_old = float(old_area);
       for (int l = 0; l < a.num_children; ++l) {
         for (int r = 0; r < b.num_children; ++r) {
@@ -207,7 +207,8 @@ std::vector<int> heights(const std::vector<typename BuildTree<N>::Node>& nodes) 
 }  // namespace
 
 template <int N>
-size_t rotate_tree(std::vector<typename BuildTree<N>::Node>& nodes, int rounds) {
+size_t rotate_tree(std::vector<typename BuildTree<N>::Node>& nodes, int rounds,
+                   bool price_every_swap) {
   size_t applied = 0;
   if (nodes.empty()) return 0;
   std::vector<int> height = heights<N>(nodes);
@@ -238,7 +239,7 @@ size_t rotate_tree(std::vector<typename BuildTree<N>::Node>& nodes, int rounds) 
     for (size_t x = nodes.size(); x-- > 0;) {
       if (searched[x] && unchanged_since(uint32_t(x), searched[x])) continue;
       const uint64_t now = clock;
-      if (rotate_at<N>(nodes, height, uint32_t(x), changed, clock))
+      if (rotate_at<N>(nodes, height, uint32_t(x), changed, clock, price_every_swap))
         ++in_round;
       else
         searched[x] = now;
@@ -271,10 +272,10 @@ std::vector<typename BuildTree<N>::Node> preorder(
   return out;
 }
 
-template size_t rotate_tree<2>(std::vector<BuildTree<2>::Node>&, int);
-template size_t rotate_tree<4>(std::vector<BuildTree<4>::Node>&, int);
-template size_t rotate_tree<8>(std::vector<BuildTree<8>::Node>&, int);
-template size_t rotate_tree<16>(std::vector<BuildTree<16>::Node>&, int);
+template size_t rotate_tree<2>(std::vector<BuildTree<2>::Node>&, int, bool);
+template size_t rotate_tree<4>(std::vector<BuildTree<4>::Node>&, int, bool);
+template size_t rotate_tree<8>(std::vector<BuildTree<8>::Node>&, int, bool);
+template size_t rotate_tree<16>(std::vector<BuildTree<16>::Node>&, int, bool);
 template std::vector<BuildTree<2>::Node> preorder<2>(const std::vector<BuildTree<2>::Node>&);
 template std::vector<BuildTree<4>::Node> preorder<4>(const std::vector<BuildTree<4>::Node>&);
 template std::vector<BuildTree<8>::Node> preorder<8>(const std::vector<BuildTree<8>::Node>&);

@@ -27,8 +27,13 @@ namespace rtk::sah {
 ///
 /// Rotations move subtrees across the index order: afterwards a child may have a lower index
 /// than its parent, and the caller renumbers the nodes (see preorder()).
+///
+/// Most swaps are ruled out before they are priced exactly, by bounds and estimates that
+/// never rule out a swap the exact price would choose; `price_every_swap` prices all of them
+/// exactly instead, the slow reference that the tests hold the fast search to.
 template <int N>
-size_t rotate_tree(std::vector<typename BuildTree<N>::Node>& nodes, int rounds);
+size_t rotate_tree(std::vector<typename BuildTree<N>::Node>& nodes, int rounds,
+                   bool price_every_swap = false);
 
 /// The nodes of the subtree rooted at `nodes[0]` in depth-first preorder, renumbered so that
 /// every child has a higher index than its parent.

@@ -3,15 +3,17 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 #include <tuple>
 #include <type_traits>
 #include <vector>
 
+#include "01_base/ray_sets.h"
 #include "04_sah/build_sah.h"
+#include "04_sah/rotations.h"
 #include "04_sah/tree_checks.h"
 #include "testing/brute_force.h"
-#include "01_base/ray_sets.h"
 #include "testing/scenes.h"
 
 namespace {
@@ -94,6 +96,44 @@ TEST_CASE_TEMPLATE("ch04: rotations never increase the SAH", W, std::integral_co
   }
   CHECK(total_rotations > 0);  // the test exercised rotations
 }
+
+// [ch04-test-rotation-search]
+TEST_CASE_TEMPLATE(
+    "ch04: the fast rotation search makes the rotations that pricing every swap "
+    "exactly makes",
+    W, std::integral_constant<int, 2>, std::integral_constant<int, 4>,
+    std::integral_constant<int, 8>, std::integral_constant<int, 16>) {
+  constexpr int N = W::value;
+  size_t total_rotations = 0;
+  for (const auto& scene : scenes()) {
+    for (const int leaf_block : {1, 8}) {
+      CAPTURE(scene.name);
+      CAPTURE(leaf_block);
+      SahBuildOptions options =
+          leaf_block == 1 ? SahBuildOptions{} : block_priced_options(leaf_block);
+      options.rotations = false;
+      const BuildTree<N> tree = build_binned_sah<N>(make_prim_refs(scene.mesh), options);
+      REQUIRE(tree.root.index == 0);
+      auto fast = tree.nodes, exact = tree.nodes;
+      const size_t applied = sah::rotate_tree<N>(fast, 3);
+      CHECK(sah::rotate_tree<N>(exact, 3, /*price_every_swap=*/true) == applied);
+      total_rotations += applied;
+      // The same swaps: every node holds the same children with the same boxes, bit for bit.
+      bool same = true;
+      for (size_t i = 0; i < fast.size(); ++i) {
+        same &= fast[i].num_children == exact[i].num_children;
+        for (int c = 0; c < fast[i].num_children; ++c) {
+          const auto &a = fast[i].children[c], &b = exact[i].children[c];
+          same &= a.index == b.index && a.leaf_count == b.leaf_count &&
+                  std::memcmp(&a.box, &b.box, sizeof a.box) == 0;
+        }
+      }
+      CHECK(same);
+    }
+  }
+  CHECK(total_rotations > 0);  // the test exercised rotations
+}
+// [ch04-test-rotation-search]
 
 TEST_CASE("ch04: occluder ordering permutes children and nothing else") {
   for (const auto& scene : scenes()) {
