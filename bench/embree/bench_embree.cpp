@@ -3,16 +3,18 @@
 // public API, their ratio, the agreement of their answers, and build speed and memory.
 //
 //   build/bench/embree/bench_embree [--rays=N] [--threads=N] [--scenes=A.obj,B.obj|DIR]
-//                                   [--procedural=0] [--size=F] [--rtk=default|all] [--embree-isa=sse4.2|avx2|...]
-//                                   [benchmark options]
+//                                   [--procedural=0] [--size=F] [--rtk=default|all]
+//                                   [--embree-isa=sse4.2|avx2|...] [benchmark options]
 //   RTK_SCENES=../shared/scenes/bunny_stanford_full build/bench/embree/bench_embree
 //
 // Benchmark names: build/SCENE/BUILDER and trace/SCENE/KIND/TRACER, where BUILDER is "embree"
 // or "rtk:ACCEL:TRI" (RTK's builders are the same for every ISA) and TRACER "embree" or
-// "rtk:ISA:ACCEL:TRI". Each scene's Embree benchmarks run before RTK's, so that RTK's
-// counters can hold the ratio to Embree measured in the same run (the machine is shared and
-// noisy: ratios taken close together are what this program is for). bench/embree/make_table.sh
-// turns the JSON output into the markdown table.
+// "rtk:ISA:ACCEL:TRI". Each scene's Embree benchmarks run before RTK's and keep Embree's
+// answers, against which RTK's are checked. RTK's ratio to Embree (the counter rtk_vs_embree)
+// is measured in pairs: every iteration of an RTK benchmark runs Embree's build or trace of
+// the same input too, right before RTK's, and the ratio is that of the two sums of times. The
+// machine is shared and noisy, and whatever slows it at a given moment then slows both.
+// bench/embree/make_table.sh turns the JSON output into the markdown table.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -58,7 +60,6 @@ struct Scene {
   std::map<RayKind, std::vector<Ray>> rays;                    // made on first use
   std::map<RayKind, std::vector<Hit>> embree_hits;             // Embree's answers, for agreement
   std::map<RayKind, std::vector<uint8_t>> embree_occluded;
-  std::map<RayKind, double> embree_mrays;                      // measured in this run
 };
 std::vector<std::unique_ptr<Scene>> scenes;
 
@@ -135,51 +136,62 @@ void build_embree(benchmark::State& state, Scene* s) {
   state.counters["threads"] = settings.threads;
 }
 
+// [bench-paired]
+/// Runs `embree` and then `rtk` once per iteration, timing each, and reports RTK's time as the
+/// iteration's. Returns RTK's speed relative to Embree's, the ratio of the sums of their times:
+/// above 1, RTK is faster.
+template <class Embree, class Rtk>
+double paired_ratio(benchmark::State& state, const Embree& embree, const Rtk& rtk) {
+  double embree_total = 0, rtk_total = 0;
+  for (auto _ : state) {
+    Timer embree_timer;
+    embree();
+    embree_total += embree_timer.seconds();
+    Timer rtk_timer;
+    rtk();
+    const double seconds = rtk_timer.seconds();
+    state.SetIterationTime(seconds);
+    rtk_total += seconds;
+  }
+  return rtk_total > 0 ? embree_total / rtk_total : 0.0;
+}
+// [bench-paired]
+
 void build_rtk(benchmark::State& state, Scene* s, AccelConfig config) {
   size_t bytes = 0;
-  for (auto _ : state) {
-    Timer timer;
-    Accel accel(s->mesh, config);
-    state.SetIterationTime(timer.seconds());
-    bytes = accel.info().bytes;
-  }
+  state.counters["rtk_vs_embree"] = paired_ratio(
+      state, [&] { EmbreeScene scene(s->mesh, settings.threads); },
+      [&] { bytes = Accel(s->mesh, config).info().bytes; });
   set_rate(state, double(s->mesh.size()), "Mtris_per_s");
   state.counters["bytes_per_tri"] = double(bytes) / double(s->mesh.size());
   state.counters["triangles"] = double(s->mesh.size());
   state.counters["threads"] = settings.threads;
 }
 
-// Times every iteration itself (manual time), so that the rate is known here and can be kept
-// for RTK's ratio.
+/// Times every iteration itself (manual time) and reports the rate of rays.
 template <class Trace>
-double timed_trace(benchmark::State& state, size_t rays, const Trace& trace) {
-  double total = 0;
+void timed_trace(benchmark::State& state, size_t rays, const Trace& trace) {
   for (auto _ : state) {
     Timer timer;
     trace();
-    const double seconds = timer.seconds();
-    state.SetIterationTime(seconds);
-    total += seconds;
+    state.SetIterationTime(timer.seconds());
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(rays));
   set_rate(state, double(rays), "Mrays_per_s");
-  return total > 0 ? double(state.iterations()) * double(rays) / total * 1e-6 : 0.0;
 }
 
 void trace_embree(benchmark::State& state, Scene* s, RayKind kind) {
   const std::vector<Ray>& rays = rays_for(*s, kind);
   const EmbreeScene& embree = embree_for(*s);
-  double mrays = 0;
   if (is_occlusion(kind)) {
     std::vector<uint8_t>& out = s->embree_occluded[kind];
     out.assign(rays.size(), 0);
-    mrays = timed_trace(state, rays.size(), [&] { embree.occluded(rays, out); });
+    timed_trace(state, rays.size(), [&] { embree.occluded(rays, out); });
   } else {
     std::vector<Hit>& out = s->embree_hits[kind];
     out.assign(rays.size(), Hit{});
-    mrays = timed_trace(state, rays.size(), [&] { embree.intersect(rays, out); });
+    timed_trace(state, rays.size(), [&] { embree.intersect(rays, out); });
   }
-  s->embree_mrays[kind] = mrays;
 }
 
 void trace_rtk(benchmark::State& state, Scene* s, RayKind kind, AccelConfig config) {
@@ -187,22 +199,23 @@ void trace_rtk(benchmark::State& state, Scene* s, RayKind kind, AccelConfig conf
   const std::string name = tracer_name(resolve_config(config));
   auto& accel = s->rtk[name];
   if (!accel) accel = std::make_unique<Accel>(s->mesh, config);
-  double mrays = 0;
+  const EmbreeScene& embree = embree_for(*s);
   double agree = -1;
   if (is_occlusion(kind)) {
-    std::vector<uint8_t> out(rays.size());
-    mrays = timed_trace(state, rays.size(), [&] { accel->occluded(rays, out); });
+    std::vector<uint8_t> out(rays.size()), embree_out(rays.size());
+    state.counters["rtk_vs_embree"] = paired_ratio(
+        state, [&] { embree.occluded(rays, embree_out); }, [&] { accel->occluded(rays, out); });
     const auto& ref = s->embree_occluded[kind];
     if (ref.size() == out.size()) agree = compare_occlusion_arrays(out, ref).agree_percent();
   } else {
-    std::vector<Hit> out(rays.size());
-    mrays = timed_trace(state, rays.size(), [&] { accel->intersect(rays, out); });
+    std::vector<Hit> out(rays.size()), embree_out(rays.size());
+    state.counters["rtk_vs_embree"] = paired_ratio(
+        state, [&] { embree.intersect(rays, embree_out); }, [&] { accel->intersect(rays, out); });
     const auto& ref = s->embree_hits[kind];
     if (ref.size() == out.size()) agree = compare_hit_arrays(out, ref, 1e-4, 0, rays).agree_percent();
   }
-  const auto embree = s->embree_mrays.find(kind);
-  if (embree != s->embree_mrays.end() && embree->second > 0)
-    state.counters["rtk_vs_embree"] = mrays / embree->second;
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(rays.size()));
+  set_rate(state, double(rays.size()), "Mrays_per_s");
   if (agree >= 0) state.counters["agree_pct"] = agree;
 }
 
