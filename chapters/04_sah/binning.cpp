@@ -125,14 +125,21 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
       cost[i] = c == none ? pos_inf : total;
     }
   }
+  // The cheapest border of every axis at once, lane by lane, without a branch on which is
+  // cheaper (a running minimum's branch goes wrong whenever a new minimum turns up). The
+  // minimum keeps its running value against a NaN cost, as a comparison would.
+  Lanes4 lowest = pos_inf;
+  for (int i = 1; i < n; ++i) lowest = min4(cost[i], lowest);
+  const Lanes4 zero{0, 0, 0, 0};
+  lowest = map.scale > zero ? lowest : pos_inf;  // unsplittable axes (and lane 3) take no part
+  // The lowest axis among equals, then its first border among equals.
   Split best;
   float best_cost = inf;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!map.splittable(axis)) continue;
-    for (int i = 1; i < n; ++i)
-      if (cost[i][axis] < best_cost) best_cost = cost[i][axis], best.axis = axis, best.pos = i;
-  }
+  for (int axis = 0; axis < 3; ++axis)
+    if (lowest[axis] < best_cost) best_cost = lowest[axis], best.axis = axis;
   if (best.valid()) {
+    best.pos = 1;
+    while (!(cost[best.pos][best.axis] == best_cost)) ++best.pos;
     best.left_count = bin_count(bins, best.axis, 0, best.pos);
     best.left_bounds = bin_bounds(bins, best.axis, 0, best.pos);
     best.right_bounds = bin_bounds(bins, best.axis, best.pos, n);
