@@ -1,7 +1,9 @@
 // Chapter 2: BVH2 traversal against the brute-force oracle, and every ISA against scalar.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -122,6 +124,56 @@ TEST_CASE("ch02: Möller-Trumbore through a BVH2: analytic hits, both sides, clo
     CHECK_FALSE(hits[4].found());
     CHECK(trace_occlusion(isa, bvh, rays) == std::vector<uint8_t>{1, 1, 1, 1, 0});
   }
+}
+
+// The closed interval at every scale: a ray that ends exactly at its hit, or starts there,
+// finds it, and one float shorter does not, by closest hit and by occlusion alike. Shared edges
+// need the first (the closest-hit rule compares hits at equal t), and any shortcut that decides
+// the distance before the division must keep both. Triangles from 1e-12 to 1e12 across and
+// directions from 1e-6 to 1e6 long put t |det| between about 1e-36 and 1e36, near both ends of
+// the float range (smaller triangles underflow the distance to 0).
+TEST_CASE("ch02: Möller-Trumbore finds a hit at either end of the ray, at every scale") {
+  std::mt19937_64 random(2024);
+  auto uniform = [&] { return float(double(random() >> 11) * 0x1.0p-53); };
+  int cases = 0;
+  for (float scale : {1e-12f, 1e-6f, 1.0f, 1e6f, 1e12f}) {
+    for (float length : {1e-6f, 1.0f, 1e6f}) {
+      for (int i = 0; i < 40; ++i) {
+        TriangleMesh mesh;
+        for (int k = 0; k < 3; ++k)
+          mesh.vertices.push_back(Vec3f{uniform(), uniform(), uniform()} * (2.0f * scale) -
+                                  Vec3f(scale));
+        mesh.triangles = {{0, 1, 2}};
+        const BVH2 bvh = build(mesh);
+        // A ray from a random point near the triangle towards a point inside it.
+        const float b1 = uniform() * 0.5f, b2 = uniform() * 0.5f;
+        const Vec3f target =
+            mesh.vertices[0] * (1.0f - b1 - b2) + mesh.vertices[1] * b1 + mesh.vertices[2] * b2;
+        Ray ray;
+        ray.org = target + (Vec3f{uniform(), uniform(), uniform()} - Vec3f(0.5f)) * (8.0f * scale);
+        ray.dir = (target - ray.org) * (length / scale);
+        const Hit full = trace(Isa::scalar, bvh, {ray})[0];
+        if (!full.found()) continue;  // the target rounded off an edge, or the triangle is a sliver
+        ++cases;
+        Ray ends_at = ray, starts_at = ray, ends_before = ray, starts_after = ray;
+        ends_at.tfar = full.t;
+        starts_at.tnear = full.t;
+        ends_before.tfar = std::nextafter(full.t, 0.0f);
+        starts_after.tnear = std::nextafter(full.t, std::numeric_limits<float>::infinity());
+        const std::vector<Ray> rays = {ends_at, starts_at, ends_before, starts_after};
+        for (Isa isa : supported_isas()) {
+          INFO(isa_name(isa) << ", scale " << scale << ", length " << length << ", case " << i);
+          const std::vector<Hit> hits = trace(isa, bvh, rays);
+          CHECK(hits[0].t == full.t);
+          CHECK(hits[1].t == full.t);
+          CHECK_FALSE(hits[2].found());
+          CHECK_FALSE(hits[3].found());
+          CHECK(trace_occlusion(isa, bvh, rays) == std::vector<uint8_t>{1, 1, 0, 0});
+        }
+      }
+    }
+  }
+  CHECK(cases > 400);  // most of the 600 rays hit
 }
 
 // [ch02-test-face-plane]
