@@ -39,16 +39,24 @@ OccluderSummary order_children(typename BuildTree<N>::Node& node,
     for (int i = 0; i < k; ++i)
       node.children[i] = children[order[i]], kids[i] = summaries[order[i]];
   }
-  // The node's summary: a ray entering it tests all boxes, then enters each child with the
-  // probability area(child) / area(node).
+  // [ch04-occluder-cost]
+  // The node's summary: a shadow ray entering it tests all boxes, then enters each child with
+  // the probability area(child) / area(node), in the order just chosen, unless a child before
+  // it has blocked it.
   OccluderSummary s;
   s.cost = options.traversal_cost;
   const double area = half_area(node_box);
+  double unblocked = 1.0;
   for (int i = 0; i < k; ++i) {
+    const double child_area = half_area(node.children[i].box);
+    const double enters = area > 0.0 ? child_area / area : 1.0;
     s.surface += kids[i].surface;
-    s.cost += (area > 0.0 ? half_area(node.children[i].box) / area : 1.0) * kids[i].cost;
+    s.cost += unblocked * enters * kids[i].cost;
+    const double blocks = child_area > 0.0 ? std::min(1.0, kids[i].surface / child_area) : 0.0;
+    unblocked *= 1.0 - enters * blocks;
   }
   return s;
+  // [ch04-occluder-cost]
 }
 
 template <int N>

@@ -19,8 +19,10 @@ struct OccluderSummary {
   /// An estimate of the surface inside the subtree: half of each primitive box's half area (a
   /// flat triangle covers at most half of its box's largest face; the builder sees boxes only).
   double surface = 0.0;
-  /// The SAH cost of the subtree for a ray that enters its box: the expected work of looking
-  /// through it without finding anything.
+  /// The expected work of a shadow ray that enters the subtree's box: its children visited in
+  /// their stored order, each entered with the odds of the SAH, and the search over where one
+  /// blocks the ray. A child that blocks every ray entering it spares the children after it,
+  /// so the cost of a likely blocker is far below its SAH cost.
   double cost = 0.0;
 };
 
@@ -31,10 +33,10 @@ OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const SahBuild
 /// How much a child is worth visiting first, higher first. For likely_blocker: the chance that a
 /// ray which enters the child's box is blocked there, surface / area (Cauchy-Crofton: a random
 /// line that meets a convex box meets a flat piece of area a inside it with probability
-/// a / half-area(box)), capped at 1, divided by the cost of looking. Searching independent
-/// places in decreasing order of probability over cost minimises the expected cost of finding
-/// the first success (Simon and Kadane, "Optimal problem-solving search", Artificial
-/// Intelligence 6, 1975).
+/// a / half-area(box)), capped at 1, divided by the expected cost of looking (the summary's).
+/// Searching independent places in decreasing order of probability over cost minimises the
+/// expected cost of finding the first success (Simon and Kadane, "Optimal problem-solving
+/// search", Artificial Intelligence 6, 1975).
 double occluder_score(const Box3f& box, const OccluderSummary& summary, OccluderOrder order);
 // [ch04-occluder-score]
 
