@@ -156,7 +156,7 @@ class Builder {
       std::array<OccluderSummary, N> summaries;
       for (int i = 0; i < k; ++i) {
         const Child& c = node.children[i];
-        summaries[i] = c.is_leaf() ? leaf_summary(refs_ + c.index, c.leaf_count, options_)
+        summaries[i] = c.is_leaf() ? leaf_summary(refs_ + c.index, c.leaf_count, c.box, options_)
                                    : fragment->sub[c.index]->summary;
       }
       fragment->summary = order_children<N>(node, summaries, set.bounds, options_);

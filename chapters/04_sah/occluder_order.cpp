@@ -7,18 +7,21 @@
 
 namespace rtk::sah {
 
-OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const SahBuildOptions& options) {
+OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const Box3f& box,
+                             const SahBuildOptions& options) {
+  double surface = 0.0;
+  for (uint32_t i = 0; i < count; ++i) surface += 0.5 * half_area(refs[i].box());
+  const double area = half_area(box);
   OccluderSummary s;
-  for (uint32_t i = 0; i < count; ++i) s.surface += 0.5 * half_area(refs[i].box());
+  s.blocks = area > 0.0 ? std::min(1.0, surface / area) : 0.0;
   s.cost = double(options.intersection_cost) * leaf_tests(count, options.leaf_block);
   return s;
 }
 
 double occluder_score(const Box3f& box, const OccluderSummary& summary, OccluderOrder order) {
-  const double area = half_area(box);
-  if (order == OccluderOrder::largest_box) return area;
-  if (order != OccluderOrder::likely_blocker || area <= 0.0 || summary.cost <= 0.0) return 0.0;
-  return std::min(1.0, summary.surface / area) / summary.cost;
+  if (order == OccluderOrder::largest_box) return half_area(box);
+  if (order != OccluderOrder::likely_blocker || summary.cost <= 0.0) return 0.0;
+  return summary.blocks / summary.cost;
 }
 
 template <int N>
@@ -48,13 +51,11 @@ OccluderSummary order_children(typename BuildTree<N>::Node& node,
   const double area = half_area(node_box);
   double unblocked = 1.0;
   for (int i = 0; i < k; ++i) {
-    const double child_area = half_area(node.children[i].box);
-    const double enters = area > 0.0 ? child_area / area : 1.0;
-    s.surface += kids[i].surface;
+    const double enters = area > 0.0 ? half_area(node.children[i].box) / area : 1.0;
     s.cost += unblocked * enters * kids[i].cost;
-    const double blocks = child_area > 0.0 ? std::min(1.0, kids[i].surface / child_area) : 0.0;
-    unblocked *= 1.0 - enters * blocks;
+    unblocked *= 1.0 - enters * kids[i].blocks;
   }
+  s.blocks = 1.0 - unblocked;
   return s;
   // [ch04-occluder-cost]
 }
@@ -70,8 +71,9 @@ OccluderSummary order_subtree(std::vector<typename BuildTree<N>::Node>& nodes,
     std::array<OccluderSummary, N> kids;
     for (int i = 0; i < node.num_children; ++i) {
       const auto& child = node.children[i];
-      kids[i] = child.is_leaf() ? leaf_summary(refs + child.index, child.leaf_count, options)
-                                : summary[child.index];
+      kids[i] = child.is_leaf()
+                    ? leaf_summary(refs + child.index, child.leaf_count, child.box, options)
+                    : summary[child.index];
     }
     // The node's own box is in its parent; only the root's is passed in.
     Box3f box;

@@ -14,11 +14,16 @@
 
 namespace rtk::sah {
 
-/// What ordering needs to know about a subtree, summed bottom-up.
+/// What ordering needs to know about a subtree, worked out bottom-up.
 struct OccluderSummary {
-  /// An estimate of the surface inside the subtree: half of each primitive box's half area (a
-  /// flat triangle covers at most half of its box's largest face; the builder sees boxes only).
-  double surface = 0.0;
+  /// The chance that a shadow ray which enters the subtree's box is blocked inside it. For a
+  /// leaf, the surface inside over the box's half area (Cauchy-Crofton: a random line that
+  /// meets a convex box meets a flat piece of area a inside it with probability
+  /// a / half-area(box)), capped at 1; the surface is estimated as half of each primitive box's
+  /// half area (a flat triangle covers at most half of its box's largest face; the builder sees
+  /// boxes only). For a node, one less the chance that none of the children it enters blocks
+  /// it, their odds taken as independent.
+  double blocks = 0.0;
   /// The expected work of a shadow ray that enters the subtree's box: its children visited in
   /// their stored order, each entered with the odds of the SAH, and the search over where one
   /// blocks the ray. A child that blocks every ray entering it spares the children after it,
@@ -26,17 +31,16 @@ struct OccluderSummary {
   double cost = 0.0;
 };
 
-/// The summary of a leaf of `count` primitives starting at `refs`.
-OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const SahBuildOptions& options);
+/// The summary of a leaf of `count` primitives starting at `refs`, in `box`.
+OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const Box3f& box,
+                             const SahBuildOptions& options);
 
 // [ch04-occluder-score]
 /// How much a child is worth visiting first, higher first. For likely_blocker: the chance that a
-/// ray which enters the child's box is blocked there, surface / area (Cauchy-Crofton: a random
-/// line that meets a convex box meets a flat piece of area a inside it with probability
-/// a / half-area(box)), capped at 1, divided by the expected cost of looking (the summary's).
-/// Searching independent places in decreasing order of probability over cost minimises the
-/// expected cost of finding the first success (Simon and Kadane, "Optimal problem-solving
-/// search", Artificial Intelligence 6, 1975).
+/// ray which enters the child's box is blocked there divided by the expected cost of looking
+/// (both the summary's). Searching independent places in decreasing order of probability over
+/// cost minimises the expected cost of finding the first success (Simon and Kadane, "Optimal
+/// problem-solving search", Artificial Intelligence 6, 1975).
 double occluder_score(const Box3f& box, const OccluderSummary& summary, OccluderOrder order);
 // [ch04-occluder-score]
 

@@ -171,32 +171,32 @@ TEST_CASE("ch04: occluder ordering permutes children and nothing else") {
 // [ch04-test-occluder-cost]
 // A shadow ray stops at its first blocker, so what it costs to look through a node depends on
 // the order of its children: a child that blocks every ray entering it spares the ones after
-// it. Three children in the node's box [0,1]^3: a cheap one that cannot block (no surface), an
-// expensive one that blocks surely (surface over its box's half area), and one beside it.
+// it. Three children in the node's box [0,1]^3: a cheap one that cannot block, an expensive one
+// that blocks surely, and a small one beside it that blocks a tenth of the rays entering it.
 TEST_CASE("ch04: a child that surely blocks a shadow ray spares the children after it") {
+  using sah::OccluderSummary;
   SahBuildOptions options;
   options.occluder_order = OccluderOrder::likely_blocker;
-  const Box3f unit{{0, 0, 0}, {1, 1, 1}}, half{{0, 0, 0}, {1, 1, 0.5f}};
+  const Box3f unit{{0, 0, 0}, {1, 1, 1}}, half{{0, 0, 0}, {1, 1, 0.5f}};  // half areas 3 and 2
   BuildTree<4>::Node node;
   node.num_children = 3;
   node.children[0] = {unit, 1, 0};  // inner children: the summaries below stand for them
   node.children[1] = {unit, 2, 0};
   node.children[2] = {half, 3, 0};
-  using sah::OccluderSummary;
-  const OccluderSummary empty{0.0, 1.0}, blocker{3.0, 10.0}, small{0.2, 2.0};
+  const OccluderSummary empty{0.0, 1.0}, blocker{1.0, 10.0}, small{0.1, 2.0};  // {blocks, cost}
   std::array<OccluderSummary, 4> kids{empty, blocker, small, {}};
   const OccluderSummary s = sah::order_children<4>(node, kids, unit, options);
-  // Scores, blocking chance over cost: the blocker 1 / 10, the small one (0.2 / 2) / 2 = 0.05,
-  // the empty one 0: that order.
+  // Scores, blocking chance over cost: the blocker 1 / 10, the small one 0.1 / 2, the empty
+  // one 0: that order.
   CHECK(node.children[0].index == 2);
   CHECK(node.children[1].index == 3);
   CHECK(node.children[2].index == 1);
   // Every ray entering the node enters the blocker and stops there: only the node's own test
   // and the blocker's search remain, however much the others would cost.
   CHECK(s.cost == doctest::Approx(options.traversal_cost + 10.0));
-  CHECK(s.surface == doctest::Approx(3.2));
-  // Without the blocker, a ray that enters the small child (area 2 of 3) is blocked there with
-  // chance 0.2 / 2, and only the others go on into the empty child.
+  CHECK(s.blocks == 1.0);
+  // Without the blocker, a ray enters the small child with chance 2/3 and is blocked there with
+  // chance 0.1; only the others go on into the empty child.
   node.num_children = 2;
   node.children[0] = {unit, 1, 0};
   node.children[1] = {half, 3, 0};
@@ -206,6 +206,13 @@ TEST_CASE("ch04: a child that surely blocks a shadow ray spares the children aft
   const double enters_small = 2.0 / 3.0;
   CHECK(t.cost == doctest::Approx(options.traversal_cost + enters_small * 2.0 +
                                   (1.0 - enters_small * 0.1) * 1.0));
+  CHECK(t.blocks == doctest::Approx(enters_small * 0.1));
+  // A leaf's chance is its surface over its box's half area, capped at 1: a flat square box
+  // holds half a square of triangle, so one such primitive blocks half the rays, four all.
+  const PrimRef flat(Box3f({0, 0, 0}, {1, 1, 0}), 0);
+  const std::vector<PrimRef> four(4, flat);
+  CHECK(sah::leaf_summary(&flat, 1, flat.box(), options).blocks == doctest::Approx(0.5));
+  CHECK(sah::leaf_summary(four.data(), 4, flat.box(), options).blocks == 1.0);
 }
 // [ch04-test-occluder-cost]
 

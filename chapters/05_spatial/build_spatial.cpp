@@ -396,7 +396,8 @@ BuildTree<N> build(const TriangleMesh& mesh, const SpatialBuildOptions& options,
       std::array<sah::OccluderSummary, N> kids{};
       for (int c = 0; c < node.num_children; ++c) {
         const auto& ch = node.children[c];
-        kids[c] = ch.is_leaf() ? sah::leaf_summary(refs.data() + ch.index, ch.leaf_count, sah_options)
+        kids[c] = ch.is_leaf() ? sah::leaf_summary(refs.data() + ch.index, ch.leaf_count, ch.box,
+                                                   sah_options)
                   : ch.index < top.size() ? summary[ch.index]
                                           : job_summary[ch.index];
       }
