@@ -14,6 +14,7 @@
 
 namespace rtk::sah {
 
+// [ch04-occluder-score]
 /// What ordering needs to know about a subtree, worked out bottom-up.
 struct OccluderSummary {
   /// The chance that a shadow ray which enters the subtree's box is blocked inside it. For a
@@ -35,7 +36,6 @@ struct OccluderSummary {
 OccluderSummary leaf_summary(const PrimRef* refs, uint32_t count, const Box3f& box,
                              const SahBuildOptions& options);
 
-// [ch04-occluder-score]
 /// How much a child is worth visiting first, higher first. For likely_blocker: the chance that a
 /// ray which enters the child's box is blocked there divided by the expected cost of looking
 /// (both the summary's). Searching independent places in decreasing order of probability over
