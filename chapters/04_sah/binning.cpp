@@ -131,7 +131,7 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   Lanes4 lowest = pos_inf;
   for (int i = 1; i < n; ++i) lowest = min4(cost[i], lowest);
   const Lanes4 zero{0, 0, 0, 0};
-  lowest = map.scale > zero ? lowest : pos_inf;  // unsplittable axes (and lane 3) take no part
+  lowest = map.scale > zero ? lowest : pos_inf;  // splittable(), lane by lane; lane 3 is out too
   // The lowest axis among equals, then its first border among equals.
   Split best;
   float best_cost = inf;
