@@ -49,9 +49,10 @@ using Node8 = NodeN<8>;
 /// The deepest tree a BVH4/BVH8 traversal stack holds: a descent pushes at most N - 1 entries
 /// per level. Deeper trees are refused when the structure is made.
 inline constexpr int kBvhMaxDepth = 64;
-/// Stack entries a traversal of an N-wide tree may need.
+/// Stack entries a traversal of an N-wide tree may need, and N spare: the sorted push of the
+/// AVX-512 kernels writes a register's worth of entries beyond the ones it pushes.
 template <int N>
-inline constexpr int kBvhStackSize = kBvhMaxDepth * (N - 1) + 1;
+inline constexpr int kBvhStackSize = kBvhMaxDepth * (N - 1) + 1 + N;
 
 /// A BVH with N-wide nodes over a triangle mesh.
 template <int N>

@@ -10,6 +10,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -140,6 +142,67 @@ RTK_INLINE void sort_pushed(BvhStackEntry* first, BvhStackEntry* end) {
   }
 }
 
+#if defined(__AVX512F__)
+// [ch03-sort-network]
+// The one place a kernel leaves the SIMD wrappers: sorting eight keys in a register takes
+// 64-bit minimum, maximum and cross-lane permutes, which only AVX-512 has as single
+// instructions. The other ISAs keep sort_pushed, and the tests hold the two to the same order.
+static_assert(sizeof(BvhStackEntry) == 16 && offsetof(BvhStackEntry, dist) == 8);
+
+/// One layer of a bitonic sorting network on eight 64-bit keys, all in one register: each lane
+/// meets the lane `J` places away (its index xor J) and keeps the larger or the smaller of the
+/// two, as the lane's place in a block of K says, so that after the six layers of K = 2, 4, 8
+/// the keys fall from lane 0 to lane 7.
+template <int K, int J>
+RTK_INLINE __m512i bitonic_layer(__m512i key) {
+  constexpr auto keeps_larger = [] {
+    unsigned m = 0;
+    for (int i = 0; i < 8; ++i)
+      if (((i & J) == 0) != ((i & K) != 0)) m |= 1u << i;
+    return static_cast<__mmask8>(m);
+  }();
+  const __m512i partner = _mm512_set_epi64(7 ^ J, 6 ^ J, 5 ^ J, 4 ^ J, 3 ^ J, 2 ^ J, 1 ^ J, 0 ^ J);
+  const __m512i other = _mm512_permutexvar_epi64(partner, key);
+  return _mm512_mask_max_epi64(_mm512_min_epi64(key, other), keeps_larger, key, other);
+}
+
+/// The children of `mask` (three or more) sorted in registers and pushed farthest first, as
+/// sort_pushed orders them, and the nearest returned: each child's key is its distance's bits
+/// in the order of signed integers with its slot below them, so that equal distances keep the
+/// slot order of the insertion sort; the lanes of children missed sort below every hit.
+RTK_INLINE NodeRef push_sorted_by_network(const NodeRef* children, uint32_t mask, const vfloat<8>& dist,
+                                          BvhStackEntry*& sp) {
+  // + 0 turns -0 into +0, which compare equal as floats but not as integers.
+  const __m256i bits = _mm256_castps_si256(_mm256_add_ps(dist.m, _mm256_setzero_ps()));
+  const __m256i ordered = _mm256_xor_si256(bits, _mm256_srli_epi32(_mm256_srai_epi32(bits, 31), 1));
+  __m512i key = _mm512_or_si512(_mm512_slli_epi64(_mm512_cvtepi32_epi64(ordered), 32),
+                                _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0));
+  const __m512i unsorted = key;
+  key = _mm512_mask_mov_epi64(_mm512_set1_epi64(std::numeric_limits<int64_t>::min()),
+                              static_cast<__mmask8>(mask), key);
+  key = bitonic_layer<2, 1>(key);
+  key = bitonic_layer<4, 2>(key);
+  key = bitonic_layer<4, 1>(key);
+  key = bitonic_layer<8, 4>(key);
+  key = bitonic_layer<8, 2>(key);
+  key = bitonic_layer<8, 1>(key);
+  const __m512i slot = _mm512_and_si512(key, _mm512_set1_epi64(7));
+  const __m512i refs = _mm512_permutexvar_epi64(slot, _mm512_loadu_si512(children));
+  const __m512i dists = _mm512_permutexvar_epi64(slot, _mm512_cvtepu32_epi64(_mm256_castps_si256(dist.m)));
+  // Entries {ref, dist} side by side: eight of them in two stores, of which the first k - 1
+  // are the pushed ones (the stack has room for the rest).
+  _mm512_storeu_si512(sp, _mm512_permutex2var_epi64(refs, _mm512_set_epi64(11, 3, 10, 2, 9, 1, 8, 0), dists));
+  _mm512_storeu_si512(sp + 4, _mm512_permutex2var_epi64(refs, _mm512_set_epi64(15, 7, 14, 6, 13, 5, 12, 4), dists));
+  sp += pop_count(mask) - 1;
+  // The nearest child, found apart from the sort so that the next node's load need not wait
+  // for the network: the smallest key of the children hit.
+  const __m512i hit_keys = _mm512_mask_mov_epi64(_mm512_set1_epi64(std::numeric_limits<int64_t>::max()),
+                                                 static_cast<__mmask8>(mask), unsorted);
+  return children[_mm512_reduce_min_epi64(hit_keys) & 7];
+}
+// [ch03-sort-network]
+#endif
+
 // [ch03-next-child]
 /// After a node's box test: the hit child (`mask`, not 0) the ray visits next, the other hit
 /// children pushed on the stack at `sp` in the order the tricks ask for, each with its entry
@@ -175,6 +238,13 @@ RTK_INLINE NodeRef next_child(const NodeRef* children, uint32_t mask, const vflo
   }
   // More children hit (or a fast path switched off): push them all, walking the mask with bit
   // scans, sort them nearest-on-top, and continue with the top.
+#if defined(__AVX512F__)
+  // Four or more children of a BVH8 node: sorted in registers, where the insertion sort's
+  // branches would be mispredicted on incoherent rays (for three, the branches cost less).
+  if constexpr (N == 8 && T.sorted_push) {
+    if (pop_count(mask) >= 3) return push_sorted_by_network(children, mask | (1u << i0), dist, sp);
+  }
+#endif
   BvhStackEntry* const first = sp;
   *sp++ = {children[i0], d[i0]};
   while (mask != 0) {

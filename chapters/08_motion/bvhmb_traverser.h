@@ -132,7 +132,7 @@ bool traverse_bvhmb(const BVHMB<N>& bvh, const Ray& ray, Hit& hit) {
   float tfar = ray.tfar;
   float cull = conservative_tfar(tfar);
 
-  BvhStackEntry stack[kBvhMbMaxDepth * (N - 1) + 1];
+  BvhStackEntry stack[kBvhMbMaxDepth * (N - 1) + 1 + N];  // N spare, as kBvhStackSize
   BvhStackEntry* sp = stack;
   *sp++ = {kTerminal, -std::numeric_limits<float>::infinity()};
   const std::byte* leaf_bytes = bvh.leaves.bytes.data();
