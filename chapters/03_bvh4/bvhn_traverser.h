@@ -21,6 +21,7 @@
 #include "01_base/simd.h"
 #include "02_bvh2/conservative_exit.h"
 #include "03_bvh4/bvh4.h"
+#include "03_bvh4/push_order.h"
 
 namespace rtk::RTK_ISA {
 
@@ -124,24 +125,6 @@ RTK_INLINE void prefetch_child(const Bvh& bvh, const std::byte* leaf_bytes, Node
 }
 // [ch03-prefetch]
 
-/// One traversal stack entry: a node to visit and its entry distance when it was pushed.
-struct BvhStackEntry {
-  NodeRef ref;
-  float dist;
-};
-
-/// Sorts freshly pushed entries (pushed in slot order) so that the nearest is on top, popped
-/// first. Among equal distances the lower slot goes on top, as in the 2-hit path, so that
-/// switching that path off changes no visit.
-RTK_INLINE void sort_pushed(BvhStackEntry* first, BvhStackEntry* end) {
-  for (BvhStackEntry* i = first + 1; i < end; ++i) {
-    const BvhStackEntry e = *i;
-    BvhStackEntry* j = i;
-    for (; j > first && j[-1].dist <= e.dist; --j) *j = j[-1];
-    *j = e;
-  }
-}
-
 #if defined(__AVX512F__)
 // [ch03-sort-network]
 // The one place a kernel leaves the SIMD wrappers: sorting eight keys in a register takes
@@ -167,9 +150,9 @@ RTK_INLINE __m512i bitonic_layer(__m512i key) {
 }
 
 /// The children of `mask` (three or more) sorted in registers and pushed farthest first, as
-/// sort_pushed orders them, and the nearest returned: each child's key is its distance's bits
-/// in the order of signed integers with its slot below them, so that equal distances keep the
-/// slot order of the insertion sort; the lanes of children missed sort below every hit.
+/// sort_pushed orders them, and the nearest returned: each child's key is push_key's (distance
+/// bits in the order of signed integers over the slot), made for all eight lanes at once; the
+/// lanes of children missed sort below every hit.
 RTK_INLINE NodeRef push_sorted_by_network(const NodeRef* children, uint32_t mask, const vfloat<8>& dist,
                                           BvhStackEntry*& sp) {
   // + 0 turns -0 into +0, which compare equal as floats but not as integers.
@@ -238,9 +221,15 @@ RTK_INLINE NodeRef next_child(const NodeRef* children, uint32_t mask, const vflo
   }
   // More children hit (or a fast path switched off): push them all, walking the mask with bit
   // scans, sort them nearest-on-top, and continue with the top.
+  // 3 children hit: ordered without branches (push_order.h).
+  if constexpr (T.sorted_push) {
+    if (pop_count(mask) == 2) {
+      const int i1 = pop_lowest_bit(mask);
+      return push_three(children, d, i0, i1, bit_scan_forward(mask), sp);
+    }
+  }
 #if defined(__AVX512F__)
-  // Four or more children of a BVH8 node: sorted in registers, where the insertion sort's
-  // branches would be mispredicted on incoherent rays (for three, the branches cost less).
+  // Four or more children of a BVH8 node: sorted in registers (below).
   if constexpr (N == 8 && T.sorted_push) {
     if (pop_count(mask) >= 3) return push_sorted_by_network(children, mask | (1u << i0), dist, sp);
   }

@@ -9,6 +9,7 @@
 #include "02_bvh2/accel_test_support.h"
 #include "02_bvh2/median_builder.h"
 #include "03_bvh4/bvh4.h"
+#include "03_bvh4/push_order.h"
 #include "testing/sanitizer_build.h"
 
 using namespace rtk;
@@ -158,6 +159,46 @@ TEST_CASE_TEMPLATE("ch03: the statistics count what the traversal did", W,
   CHECK(occ.nodes < all.nodes);
   CHECK(occ.culled == 0);
 }
+
+// [ch03-test-push-order]
+TEST_CASE("ch03: the branch-free orders of pushed children are the insertion sort's") {
+  // Distances with ties, both zeros, negative entries (a ray starting behind the boxes' planes)
+  // and infinity; every triple of them in every three of eight slots.
+  const float values[] = {-2.0f, -0.0f, 0.0f, 0.5f, 1.0f, std::numeric_limits<float>::infinity()};
+  SUBCASE("keys order by distance, then slot") {
+    for (float a : values)
+      for (float b : values)
+        for (int i = 0; i < 8; ++i)
+          for (int j = 0; j < 8; ++j)
+            if (i != j) CHECK((push_key(a, i) < push_key(b, j)) == (a < b || (a == b && i < j)));
+  }
+  SUBCASE("three children") {
+    NodeRef children[8];
+    for (int s = 0; s < 8; ++s) children[s] = make_inner_ref(64 * size_t(s + 1));
+    int checked = 0;
+    for (int i0 = 0; i0 < 8; ++i0)
+      for (int i1 = i0 + 1; i1 < 8; ++i1)
+        for (int i2 = i1 + 1; i2 < 8; ++i2)
+          for (float x : values)
+            for (float y : values)
+              for (float z : values) {
+                float d[8] = {};
+                d[i0] = x, d[i1] = y, d[i2] = z;
+                BvhStackEntry expected[3] = {
+                    {children[i0], x}, {children[i1], y}, {children[i2], z}};
+                sort_pushed(expected, expected + 3);
+                BvhStackEntry stack[3] = {};
+                BvhStackEntry* sp = stack;
+                const NodeRef next = push_three(children, d, i0, i1, i2, sp);
+                CHECK(sp == stack + 2);
+                CHECK(next == expected[2].ref);
+                for (int k = 0; k < 2; ++k) CHECK(stack[k].ref == expected[k].ref);
+                ++checked;
+              }
+    CHECK(checked == 56 * 216);
+  }
+}
+// [ch03-test-push-order]
 
 TEST_CASE("ch03: a ray lying in a face plane of a box still finds the edge it hits there") {
   // With the sign-selected planes the 0 * inf = NaN of such a slab drops out of the max and min
