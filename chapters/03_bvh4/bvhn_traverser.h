@@ -149,7 +149,7 @@ RTK_INLINE __m512i bitonic_layer(__m512i key) {
   return _mm512_mask_max_epi64(_mm512_min_epi64(key, other), keeps_larger, key, other);
 }
 
-/// The children of `mask` (three or more) sorted in registers and pushed farthest first, as
+/// The children of `mask` (four or more) sorted in registers and pushed farthest first, as
 /// sort_pushed orders them, and the nearest returned: each child's key is push_key's (distance
 /// bits in the order of signed integers over the slot), made for all eight lanes at once; the
 /// lanes of children missed sort below every hit.
@@ -219,9 +219,7 @@ RTK_INLINE NodeRef next_child(const NodeRef* children, uint32_t mask, const vflo
       return children[near];
     }
   }
-  // More children hit (or a fast path switched off): push them all, walking the mask with bit
-  // scans, sort them nearest-on-top, and continue with the top.
-  // 3 children hit: ordered without branches (push_order.h).
+  // 3 children hit: ordered without branches (push_three).
   if constexpr (T.sorted_push) {
     if (pop_count(mask) == 2) {
       const int i1 = pop_lowest_bit(mask);
@@ -229,11 +227,13 @@ RTK_INLINE NodeRef next_child(const NodeRef* children, uint32_t mask, const vflo
     }
   }
 #if defined(__AVX512F__)
-  // Four or more children of a BVH8 node: sorted in registers (below).
+  // 4 or more children of a BVH8 node, on AVX-512: sorted in registers (push_sorted_by_network).
   if constexpr (N == 8 && T.sorted_push) {
     if (pop_count(mask) >= 3) return push_sorted_by_network(children, mask | (1u << i0), dist, sp);
   }
 #endif
+  // More children hit (or a fast path switched off): push them all, walking the mask with bit
+  // scans, sort them nearest-on-top, and continue with the top.
   BvhStackEntry* const first = sp;
   *sp++ = {children[i0], d[i0]};
   while (mask != 0) {
