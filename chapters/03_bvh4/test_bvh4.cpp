@@ -2,6 +2,8 @@
 // oracle and against each other.
 #include <doctest/doctest.h>
 
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -192,7 +194,11 @@ TEST_CASE("ch03: the branch-free orders of pushed children are the insertion sor
                 const NodeRef next = push_three(children, d, i0, i1, i2, sp);
                 CHECK(sp == stack + 2);
                 CHECK(next == expected[2].ref);
-                for (int k = 0; k < 2; ++k) CHECK(stack[k].ref == expected[k].ref);
+                for (int k = 0; k < 2; ++k) {
+                  CHECK(stack[k].ref == expected[k].ref);
+                  // the distance cull-at-pop compares, the same float bit for bit
+                  CHECK(std::bit_cast<uint32_t>(stack[k].dist) == std::bit_cast<uint32_t>(expected[k].dist));
+                }
                 ++checked;
               }
     CHECK(checked == 56 * 216);
