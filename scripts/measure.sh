@@ -119,24 +119,34 @@ section_ch03_ablation() { # BVH4/8: each traversal trick off against all on; the
   plot chapters/03_bvh4/figure/ablation.gp chapters/03_bvh4/ch03_ablation
 }
 
-section_ch04() { # SAH: build speed and quality, large scenes, threads, what the trees buy, costs; then ch04_bins and ch04_occluders
+section_ch04() { # SAH: build speed and quality, large scenes, threads, what the trees buy, costs; then ch04_bins, ch04_growth, ch04_occluders and ch04_rotations
   build ch04_bench
   run_section ch04_bins
   run_section ch04_growth
   run_section ch04_occluders
+  run_section ch04_rotations
   RTK_SCENES=$SCENES gbench ch04 "$B/chapters/04_sah/ch04_bench" \
-    --benchmark_filter='^(build/bvh[248]/[a-z+]+/tris:1000000/threads:1|trace/|costs/|real/.*threads:1)' \
+    --benchmark_filter='^(build/bvh[248]/[a-z+]+/tris:1000000/threads:1|trace/|costs/|real/bvh4/.*threads:1)' \
     --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
   RTK_BENCH_LARGE=1 gbench ch04_large "$B/chapters/04_sah/ch04_bench" --benchmark_filter='tris:(4|16)000000'
   gbench ch04_threads "$B/chapters/04_sah/ch04_bench" \
     --benchmark_filter='build/bvh4/binned/tris:(100000|1000000)/' \
     --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
   local t
-  for t in build large threads real real_bvh8 trace costs; do
+  for t in build large threads real trace costs; do
     table ch04 chapters/04_sah/ch04_$t.md \
       python3 chapters/04_sah/bench_tables.py $t "$OUT/ch04.json" "$OUT/ch04_large.json" \
       "$OUT/ch04_threads.json"
   done
+}
+
+section_ch04_rotations() { # SAH: what the rotations cost a BVH8 build of each real mesh and what they buy; the table
+  build ch04_bench
+  have_scenes || return 0
+  RTK_SCENES=$SCENES gbench ch04_rotations "$B/chapters/04_sah/ch04_bench" --benchmark_filter='^real/bvh8/' \
+    --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+  table ch04_rotations chapters/04_sah/ch04_real_bvh8.md \
+    python3 chapters/04_sah/bench_tables.py real_bvh8 "$OUT/ch04_rotations.json"
 }
 
 section_ch04_occluders() { # SAH: the order of children for shadow rays, visits and Mrays/s per order; the table

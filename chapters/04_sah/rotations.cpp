@@ -85,7 +85,8 @@ bool rotate_at(std::vector<typename BuildTree<N>::Node>& nodes, std::vector<int>
       prefix.extend(inner.children[l].box);
       prefix_height = std::max(prefix_height, height_of<N>(inner.children[l], height));
       fast_without[p][l] = FastBox(without[p][l]);
-      fast_grandchild[p][l] = FastBox(inner.children[l].box);
+      if constexpr (N <= kGrandchildSwapWidth)
+        fast_grandchild[p][l] = FastBox(inner.children[l].box);
     }
   }
   std::array<double, N> area;
@@ -123,30 +124,35 @@ bool rotate_at(std::vector<typename BuildTree<N>::Node>& nodes, std::vector<int>
       }
     }
   }
-  // Grandchild (p, l) swaps with grandchild (q, r).
-  for (int p = 0; p < k; ++p) {
-    if (node.children[p].is_leaf()) continue;
-    const auto& a = nodes[node.children[p].index];
-    for (int q = p + 1; q < k; ++q) {
-      if (node.children[q].is_leaf()) continue;
-      const auto& b = nodes[node.children[q].index];
-      const double old_area = area[p] + area[q];
-      const bool quick = !price_every_swap && quick_estimate(old_area);
-      const float fast_old = float(old_area);
-      for (int l = 0; l < a.num_children; ++l) {
-        for (int r = 0; r < b.num_children; ++r) {
-          if (quick && fast_old - merged_area(fast_without[p][l], fast_grandchild[q][r]) -
-                               merged_area(fast_without[q][r], fast_grandchild[p][l]) <
-                           float(best.gain) - kQuickMargin * fast_old)
-            continue;
-          const Box3f box_a = merge(without[p][l], b.children[r].box);
-          const Box3f box_b = merge(without[q][r], a.children[l].box);
-          const double gain = old_area - half_area(box_a) - half_area(box_b);
-          if (!(gain > best.gain && gain > kMinRelativeGain * old_area)) continue;
-          const int new_p = 1 + std::max(height_without[p][l], height_of<N>(b.children[r], height));
-          const int new_q = 1 + std::max(height_without[q][r], height_of<N>(a.children[l], height));
-          if (node_height(p, new_p, q, new_q) > height[x]) continue;
-          best = {gain, -1, p, l, q, r, box_a, box_b};
+  // Grandchild (p, l) swaps with grandchild (q, r), in nodes narrow enough for them to pay
+  // (kGrandchildSwapWidth).
+  if constexpr (N <= kGrandchildSwapWidth) {
+    for (int p = 0; p < k; ++p) {
+      if (node.children[p].is_leaf()) continue;
+      const auto& a = nodes[node.children[p].index];
+      for (int q = p + 1; q < k; ++q) {
+        if (node.children[q].is_leaf()) continue;
+        const auto& b = nodes[node.children[q].index];
+        const double old_area = area[p] + area[q];
+        const bool quick = !price_every_swap && quick_estimate(old_area);
+        const float fast_old = float(old_area);
+        for (int l = 0; l < a.num_children; ++l) {
+          for (int r = 0; r < b.num_children; ++r) {
+            if (quick && fast_old - merged_area(fast_without[p][l], fast_grandchild[q][r]) -
+                                 merged_area(fast_without[q][r], fast_grandchild[p][l]) <
+                             float(best.gain) - kQuickMargin * fast_old)
+              continue;
+            const Box3f box_a = merge(without[p][l], b.children[r].box);
+            const Box3f box_b = merge(without[q][r], a.children[l].box);
+            const double gain = old_area - half_area(box_a) - half_area(box_b);
+            if (!(gain > best.gain && gain > kMinRelativeGain * old_area)) continue;
+            const int new_p =
+                1 + std::max(height_without[p][l], height_of<N>(b.children[r], height));
+            const int new_q =
+                1 + std::max(height_without[q][r], height_of<N>(a.children[l], height));
+            if (node_height(p, new_p, q, new_q) > height[x]) continue;
+            best = {gain, -1, p, l, q, r, box_a, box_b};
+          }
         }
       }
     }
@@ -156,7 +162,7 @@ bool rotate_at(std::vector<typename BuildTree<N>::Node>& nodes, std::vector<int>
   auto& parent_a = nodes[node.children[best.parent_a].index];
   if (best.child >= 0) {
     std::swap(node.children[best.child], parent_a.children[best.slot_a]);
-  } else {
+  } else if constexpr (N <= kGrandchildSwapWidth) {
     auto& parent_b = nodes[node.children[best.parent_b].index];
     std::swap(parent_a.children[best.slot_a], parent_b.children[best.slot_b]);
     node.children[best.parent_b].box = best.box_b;

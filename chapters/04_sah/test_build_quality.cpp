@@ -136,6 +136,41 @@ TEST_CASE_TEMPLATE(
 }
 // [ch04-test-rotation-search]
 
+// [ch04-test-grandchild-swaps]
+TEST_CASE_TEMPLATE("ch04: nodes of up to four children swap two grandchildren, wider ones do not",
+                   W, std::integral_constant<int, 2>, std::integral_constant<int, 4>,
+                   std::integral_constant<int, 8>, std::integral_constant<int, 16>) {
+  constexpr int N = W::value;
+  // The root has two inner children, each with a leaf near x = 0 and a leaf near x = 10: p's
+  // at y = 0, q's at y = 2. Swapping p's far leaf with q's near one shrinks both boxes to a
+  // tenth; no swap of a child with a grandchild shrinks anything.
+  using Tree = BuildTree<N>;
+  auto leaf = [](float x, float y, uint32_t first) {
+    typename Tree::Child c;
+    c.box = Box3f(Vec3f(x, y, 0.0f), Vec3f(x + 1.0f, y + 1.0f, 1.0f));
+    c.index = first;
+    c.leaf_count = 1;
+    return c;
+  };
+  std::vector<typename Tree::Node> nodes(3);
+  nodes[1].children[0] = leaf(0.0f, 0.0f, 0), nodes[1].children[1] = leaf(10.0f, 0.0f, 1);
+  nodes[2].children[0] = leaf(0.0f, 2.0f, 2), nodes[2].children[1] = leaf(10.0f, 2.0f, 3);
+  nodes[1].num_children = nodes[2].num_children = nodes[0].num_children = 2;
+  for (uint32_t p : {1u, 2u}) {
+    auto& child = nodes[0].children[p - 1];
+    child.index = p;
+    child.box = merge(nodes[p].children[0].box, nodes[p].children[1].box);
+  }
+  const size_t applied = sah::rotate_tree<N>(nodes, 3);
+  CHECK(applied == (N <= 4 ? 1u : 0u));
+  // After the swap each child holds the two leaves at one x: a box one unit wide.
+  for (int c = 0; c < 2; ++c) {
+    const Box3f& box = nodes[0].children[c].box;
+    CHECK(box.upper.x - box.lower.x == (N <= 4 ? 1.0f : 11.0f));
+  }
+}
+// [ch04-test-grandchild-swaps]
+
 TEST_CASE("ch04: occluder ordering permutes children and nothing else") {
   for (const auto& scene : scenes()) {
     CAPTURE(scene.name);
