@@ -15,9 +15,9 @@ namespace rtk::sah {
 // [ch04-grandchild-swaps]
 /// The widest node whose search also swaps two grandchildren. Such swaps grow as N^4 / 2 (every
 /// pair of children, every pair of their children: 96 in a BVH4 node, 1,792 in a BVH8 node)
-/// against N^3 swaps of a child with a grandchild. Measured on the real meshes, they buy a BVH4
-/// a quarter of what its rotations gain on Sponza, but a BVH8 under 0.2 % of SAH for a fifth
-/// of its build time (chapter 4, "Tree rotations").
+/// against N^3 swaps of a child with a grandchild. Measured on the real meshes, they make a
+/// fifth of what a BVH4's rotations gain on Sponza, but a twentieth of a BVH8's (under 0.2 % of
+/// SAH) for a fifth of its build time (chapter 4, "Tree rotations").
 inline constexpr int kGrandchildSwapWidth = 4;
 // [ch04-grandchild-swaps]
 
