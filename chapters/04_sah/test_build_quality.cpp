@@ -142,8 +142,8 @@ TEST_CASE_TEMPLATE("ch04: nodes of up to four children swap two grandchildren, w
                    std::integral_constant<int, 8>, std::integral_constant<int, 16>) {
   constexpr int N = W::value;
   // The root has two inner children, each with a leaf near x = 0 and a leaf near x = 10: p's
-  // at y = 0, q's at y = 2. Swapping p's far leaf with q's near one shrinks both boxes to a
-  // tenth; no swap of a child with a grandchild shrinks anything.
+  // at y = 0, q's at y = 2. Swapping p's far leaf with q's near one shrinks both boxes from
+  // eleven units long to one; no swap of a child with a grandchild shrinks anything.
   using Tree = BuildTree<N>;
   auto leaf = [](float x, float y, uint32_t first) {
     typename Tree::Child c;
