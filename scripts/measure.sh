@@ -385,10 +385,11 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 }
 
 # A full run, in the book's order. A section may run parts that are sections of their own
-# (ch04 runs ch04_bins): those can be named alone, to remake one figure.
+# (ch04 runs ch04_bins): those can be named alone, to remake one figure. ch14_path_loop is run
+# only when named: it builds the path loop of an earlier commit to compare with.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch11 ch12 ch13 ch14 ch15 ch16 embree)
-PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch05_budget ch06_speed ch12_gallery
-       ch14_convergence ch14_equal_time ch14_path_loop)
+PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
+       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop)
 
 # --- the machine ------------------------------------------------------------------------------
 
