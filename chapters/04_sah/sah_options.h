@@ -20,8 +20,11 @@ inline constexpr int kMaxSahBins = 64;
 /// themselves parallel loops over blocks of primitives. At the top of the tree there is one set
 /// and nothing else to do, so its passes must be shared; lower down, sibling subtrees are tasks
 /// that keep the threads busy, and a parallel loop would only add its overhead (bins per thread
-/// to merge, a second pass to swap misplaced primitives). 2^15 primitives make 8 blocks.
-inline constexpr uint32_t kLargeJobPrims = 1u << 15;
+/// to merge, a second pass to swap misplaced primitives). The root's node is filled by one split
+/// after another, each waiting for the one before, and its last splits cut quarters of the scene
+/// into eighths: below this threshold they would run on one thread while the others wait, so it
+/// lies well below a quarter of the scenes worth sharing. 2^13 primitives make 4 blocks.
+inline constexpr uint32_t kLargeJobPrims = 1u << 13;
 
 /// Sets of fewer primitives are "small jobs": one thread builds their whole subtree without
 /// creating tasks, then improves it with rotations. Such a subtree takes a millisecond or two;
@@ -34,7 +37,10 @@ inline constexpr uint32_t kSmallJobPrims = 1u << 12;
 /// The parallel partition of a large job cuts its range into blocks of this many primitives.
 /// The blocks, not the threads, fix where every primitive ends up, so the tree does not depend
 /// on how many threads took part.
-inline constexpr uint32_t kPartitionBlockPrims = 1u << 12;
+inline constexpr uint32_t kPartitionBlockPrims = 1u << 11;
+static_assert(kSmallJobPrims <= kLargeJobPrims, "a large job is not a small one");
+static_assert(kLargeJobPrims >= 4 * kPartitionBlockPrims,
+              "the smallest large job gives each of two threads two blocks");
 // [ch04-granularity]
 
 /// The node depth (the root at 1) from which an N-wide tree's nodes are filled by median splits:

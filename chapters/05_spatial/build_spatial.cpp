@@ -107,7 +107,7 @@ class Builder {
       s.map = sah::BinMapping(s.centroids, sah::bins_for(n, sah_.bins));
       auto bins = std::make_unique<sah::Bins>();
       bins->reset(s.map.num_bins);
-      if (n >= kLargeJobPrims)
+      if (n >= kSpatialLargeJobRefs)
         sah::parallel_bin_prims(s.refs.data(), n, s.map, *bins);
       else
         sah::bin_prims(s.refs.data(), n, s.map, *bins);
