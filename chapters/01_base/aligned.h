@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace rtk {
@@ -34,5 +35,23 @@ struct AlignedAllocator {
 /// A vector whose data starts on a cache line.
 template <class T>
 using aligned_vector = std::vector<T, AlignedAllocator<T, 64>>;
+
+/// AlignedAllocator for storage that is written after it is sized, by its owners, possibly on
+/// many threads: resize() default-initialises the new elements, which for bytes and plain
+/// structs means it writes nothing, where a vector would first zero them all on one thread.
+template <class T, std::size_t Alignment = 64>
+struct UninitializedAlignedAllocator : AlignedAllocator<T, Alignment> {
+  template <class U> struct rebind { using other = UninitializedAlignedAllocator<U, Alignment>; };
+  UninitializedAlignedAllocator() = default;
+  template <class U> UninitializedAlignedAllocator(const UninitializedAlignedAllocator<U, Alignment>&) {}
+  template <class U> void construct(U* p) { ::new (static_cast<void*>(p)) U; }
+  template <class U, class... Args> void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// An aligned vector whose resize() leaves new elements unwritten (see above).
+template <class T>
+using aligned_buffer = std::vector<T, UninitializedAlignedAllocator<T, 64>>;
 
 }  // namespace rtk

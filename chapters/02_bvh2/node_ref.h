@@ -6,6 +6,7 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -45,7 +46,7 @@ constexpr uint32_t leaf_blocks(NodeRef ref) { return uint32_t(ref >> 1) & 15; }
 /// read the bytes as blocks of their type.
 struct LeafBlocks {
   std::string layout;               ///< e.g. "triangle1"
-  aligned_vector<std::byte> bytes;  ///< the blocks, each a multiple of 16 bytes
+  aligned_buffer<std::byte> bytes;  ///< the blocks, each a multiple of 16 bytes
 };
 
 /// A way of storing a leaf's triangles: a block type, how many blocks `n` triangles take, and
@@ -72,13 +73,17 @@ size_t blocks_for_leaf(size_t n) {
 }
 
 /// Packs the blocks of one leaf holding triangles `prims` at byte `offset` of `leaves`, which
-/// holds them already, and returns its reference.
+/// holds them already, and returns its reference. The bytes were sized but not written (many
+/// threads pack at once, and zeroing them all first was a pass on one thread); they are zeroed
+/// here, leaf by leaf, so that a layout's unused bytes are the same in every build.
 template <LeafLayout L>
 NodeRef pack_leaf(LeafBlocks& leaves, size_t offset, const TriangleMesh& mesh,
                   std::span<const uint32_t> prims) {
   const size_t blocks = blocks_for_leaf<L>(prims.size());
   if (blocks == 0) return kEmptyLeaf;
-  L::pack(mesh, prims, reinterpret_cast<typename L::Block*>(leaves.bytes.data() + offset));
+  std::byte* out = leaves.bytes.data() + offset;
+  std::memset(out, 0, blocks * sizeof(typename L::Block));
+  L::pack(mesh, prims, reinterpret_cast<typename L::Block*>(out));
   return make_leaf_ref(offset, uint32_t(blocks));
 }
 
