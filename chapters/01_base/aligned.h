@@ -43,7 +43,8 @@ template <class T, std::size_t Alignment = 64>
 struct UninitializedAlignedAllocator : AlignedAllocator<T, Alignment> {
   template <class U> struct rebind { using other = UninitializedAlignedAllocator<U, Alignment>; };
   UninitializedAlignedAllocator() = default;
-  template <class U> UninitializedAlignedAllocator(const UninitializedAlignedAllocator<U, Alignment>&) {}
+  template <class U>
+  UninitializedAlignedAllocator(const UninitializedAlignedAllocator<U, Alignment>&) {}
   template <class U> void construct(U* p) { ::new (static_cast<void*>(p)) U; }
   template <class U, class... Args> void construct(U* p, Args&&... args) {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
