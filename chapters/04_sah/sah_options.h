@@ -22,8 +22,9 @@ inline constexpr int kMaxSahBins = 64;
 /// that keep the threads busy, and a parallel loop would only add its overhead (bins per thread
 /// to merge, a second pass to swap misplaced primitives). The root's node is filled by one split
 /// after another, each waiting for the one before, and its last splits cut quarters of the scene
-/// into eighths: below this threshold they would run on one thread while the others wait, so it
-/// lies well below a quarter of the scenes worth sharing. 2^13 primitives make 4 blocks.
+/// into eighths; a split below this threshold runs on one thread while the others wait, so it
+/// lies well below a quarter of any scene worth building in parallel. 2^13 primitives make 4
+/// blocks.
 inline constexpr uint32_t kLargeJobPrims = 1u << 13;
 
 /// Sets of fewer primitives are "small jobs": one thread builds their whole subtree without
