@@ -35,7 +35,7 @@ double per_second_millions(size_t count, double seconds) {
 int run_trace(std::span<const std::string_view> args) {
   const Options options(
       "trace", args,
-      {.with_value = {"i", "motion", "rays", "hits", "occl", "accel", "tri", "isa", "threads", "repeat"}, .flags = {}});
+      {.with_value = {"i", "motion", "rays", "hits", "occl", "accel", "tri", "isa", "order", "threads", "repeat"}, .flags = {}});
   // Step 1: the command line, all of it checked before any file is read.
   const std::string scene = options.required("i");
   // -motion: the same scene at shutter time 1 (chapter 8); each ray's time picks the moment.
@@ -53,6 +53,12 @@ int run_trace(std::span<const std::string_view> args) {
   config.tri = options.get("tri", "");
   if (options.has("isa")) config.isa = choose_isa(options.required("isa"));
   config.threads = int(options.get_count("threads", 1, 1, 1024));
+  // -order: whether a batch is traced sorted (chapter 9); the answers are the same.
+  const std::string order = options.get("order", "auto");
+  if (order == "auto") config.order = RayOrderPolicy::Mode::automatic;
+  else if (order == "sorted") config.order = RayOrderPolicy::Mode::always;
+  else if (order == "given") config.order = RayOrderPolicy::Mode::never;
+  else throw options.error("-order: '" + order + "' is not auto, sorted or given");
   const size_t repeat = options.get_count("repeat", 1, 1, 1000);
   // Refuses an unknown -accel or -tri before a large scene is loaded (with -motion, the motion
   // structure's strings are checked when it is built).

@@ -9,7 +9,10 @@
 //
 // Benchmark names: build/SCENE/BUILDER and trace/SCENE/KIND/TRACER, where BUILDER is "embree"
 // or "rtk:ACCEL:TRI" (RTK's builders are the same for every ISA) and TRACER "embree" or
-// "rtk:ISA:ACCEL:TRI". Each scene's Embree benchmarks run before RTK's and keep Embree's
+// "rtk:ISA:ACCEL:TRI" (RTK's default, which sorts large incoherent batches as chapter 9 does;
+// ":given" appended: the best ISA's default tracing every batch as given), and
+// trace/SCENE/KIND/embree:rtk-order pairs Embree on the rays as given with Embree on the same
+// rays sorted in RTK's order (counter order_gain). Each scene's Embree benchmarks run before RTK's and keep Embree's
 // answers, against which RTK's are checked. RTK's ratio to Embree (the counter rtk_vs_embree)
 // is measured in pairs: every iteration of an RTK benchmark runs Embree's build or trace of
 // the same input too, right before RTK's, and the ratio is that of the two sums of times. The
@@ -81,6 +84,11 @@ EmbreeScene& embree_for(Scene& s) {
 std::string tracer_name(const AccelInfo& info) {
   return "rtk:" + std::string(isa_name(info.isa)) + ":" + info.accel + ":" + info.tri;
 }
+// The default traces large incoherent batches sorted (chapter 9); ":given" marks a
+// configuration that traces every batch as given, the kernels alone.
+std::string tracer_name(const AccelConfig& config) {
+  return tracer_name(resolve_config(config)) + (config.order == RayOrderPolicy::Mode::never ? ":given" : "");
+}
 
 // The RTK configurations to compare: the default one of every ISA the CPU runs and, on the
 // best ISA, every other structure (--rtk=all: every structure and layout on every ISA).
@@ -89,8 +97,8 @@ std::vector<AccelConfig> rtk_configs() {
   std::vector<std::string> seen;
   auto add = [&](AccelConfig c) {
     try {
+      const std::string name = tracer_name(c);
       const AccelInfo info = resolve_config(c);
-      const std::string name = tracer_name(info);
       if (std::find(seen.begin(), seen.end(), name) != seen.end()) return;
       seen.push_back(name);
       c.accel = info.accel;
@@ -101,6 +109,7 @@ std::vector<AccelConfig> rtk_configs() {
     }
   };
   for (Isa isa : supported_isas()) add({.accel = "", .tri = "", .isa = isa, .threads = settings.threads});
+  add({.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads, .order = RayOrderPolicy::Mode::never});
   for (Isa isa : supported_isas()) {
     if (!settings.all_rtk && isa != best_isa()) continue;
     for (const std::string& accel : supported_accels()) {
@@ -194,9 +203,29 @@ void trace_embree(benchmark::State& state, Scene* s, RayKind kind) {
   }
 }
 
+// Embree on the batch as given and on a copy sorted in RTK's order (chapter 9; the sort is not
+// timed): how much of RTK's lead on a kind of ray the order alone would give Embree.
+// order_gain = time as given / time in RTK's order.
+void trace_embree_in_rtk_order(benchmark::State& state, Scene* s, RayKind kind) {
+  const std::vector<Ray>& rays = rays_for(*s, kind);
+  const EmbreeScene& embree = embree_for(*s);
+  RayOrderPolicy always;
+  always.mode = RayOrderPolicy::Mode::always;
+  SortedRays sorted;
+  sort_rays(rays, RayOrderKey(s->mesh.bounds()), always, sorted);
+  std::vector<Hit> hits(rays.size());
+  std::vector<uint8_t> occluded(rays.size());
+  const double gain = paired_ratio(
+      state,
+      [&] { is_occlusion(kind) ? embree.occluded(rays, occluded) : embree.intersect(rays, hits); },
+      [&] { is_occlusion(kind) ? embree.occluded(sorted.rays, occluded) : embree.intersect(sorted.rays, hits); });
+  state.counters["order_gain"] = gain;
+  set_rate(state, double(rays.size()), "Mrays_per_s");
+}
+
 void trace_rtk(benchmark::State& state, Scene* s, RayKind kind, AccelConfig config) {
   const std::vector<Ray>& rays = rays_for(*s, kind);
-  const std::string name = tracer_name(resolve_config(config));
+  const std::string name = tracer_name(config);
   auto& accel = s->rtk[name];
   if (!accel) accel = std::make_unique<Accel>(s->mesh, config);
   const EmbreeScene& embree = embree_for(*s);
@@ -317,8 +346,10 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark((prefix + "embree").c_str(), trace_embree, s, kind)
           ->UseManualTime()->Unit(benchmark::kMillisecond);
       for (const AccelConfig& c : configs)
-        benchmark::RegisterBenchmark((prefix + tracer_name(resolve_config(c))).c_str(), trace_rtk, s, kind, c)
+        benchmark::RegisterBenchmark((prefix + tracer_name(c)).c_str(), trace_rtk, s, kind, c)
             ->UseManualTime()->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark((prefix + "embree:rtk-order").c_str(), trace_embree_in_rtk_order, s, kind)
+          ->UseManualTime()->Unit(benchmark::kMillisecond);
     }
   }
 

@@ -7,7 +7,9 @@
 // isa/SCENE/KIND/ISA (kDefaultInflight on each ISA). Each alternates, on the same rays and
 // tree, the single-ray kernel and the in-flight one, and reports speedup = time of the
 // single-ray kernel / time in flight (above 1: rays in flight are faster), in the thread's CPU
-// time, so that the ratio survives a shared machine.
+// time, so that the ratio survives a shared machine. order/SCENE/KIND alternates the
+// single-ray kernel on a batch of 2^18 rays as given and the same kernel on the batch sorted
+// (the sort included), and reports speedup = given / sorted.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -21,6 +23,7 @@
 #include "06_layouts/layout_build.h"
 #include "07_intersectors/layout_intersectors.h"
 #include "09_inflight/inflight.h"
+#include "09_inflight/ray_order.h"
 #include "io/obj_loader.h"
 #include "replay/ray_generator.h"
 #include "testing/scenes.h"
@@ -30,6 +33,8 @@ using namespace rtk;
 namespace {
 
 constexpr size_t kRays = size_t(1) << 16;
+// The order's batches: as many rays as the Embree comparison traces at once.
+constexpr size_t kOrderRays = size_t(1) << 18;
 constexpr RayKind kKinds[] = {RayKind::primary, RayKind::diffuse, RayKind::shadow};
 constexpr TriangleConfig kTri{TriangleLayout::triangle8, IntersectorKind::moeller};
 
@@ -39,6 +44,7 @@ struct Scene {
   TriangleMesh mesh;
   std::unique_ptr<LayoutBVH<8>> bvh;
   std::map<RayKind, std::vector<Ray>> rays;
+  std::map<RayKind, std::vector<Ray>> order_rays;
 };
 
 // Loads the mesh, builds the tree and makes the rays on first use.
@@ -93,6 +99,49 @@ void bm_inflight(benchmark::State& state, Scene* scene, RayKind kind, Isa isa, I
 }
 // [ch09-bench]
 
+// [ch09-order-bench]
+void bm_order(benchmark::State& state, Scene* scene, RayKind kind) {
+  Scene& s = prepare(*scene, kind);
+  auto& rays = s.order_rays[kind];
+  if (rays.empty()) rays = generate_rays(s.mesh, kind, kOrderRays, 1);
+  const bool occlusion = kind == RayKind::shadow;
+  const TraceKernels kernels = RTK_PICK_ISA(best_isa(), intersector_kernels<8>)(kTri);
+  const RayOrderKey key(s.mesh.bounds());
+  const RayOrderPolicy policy;  // the default: sort a large batch unless it is coherent already
+  std::vector<Hit> hits(rays.size());
+  std::vector<uint8_t> occ(rays.size());
+  SortedRays sorted;
+  bool was_sorted = false;
+  double given_seconds = 0, sorted_seconds = 0, sort_seconds = 0;
+  for (auto _ : state) {
+    const double t0 = thread_seconds();
+    if (occlusion) kernels.occluded(&s.bvh->bvh, rays, occ);
+    else kernels.intersect(&s.bvh->bvh, rays, hits);
+    const double t1 = thread_seconds();
+    was_sorted = sort_rays(rays, key, policy, sorted);
+    const double t2 = thread_seconds();
+    if (!was_sorted && occlusion) kernels.occluded(&s.bvh->bvh, rays, occ);
+    else if (!was_sorted) kernels.intersect(&s.bvh->bvh, rays, hits);
+    else if (occlusion) occluded_sorted(kernels, &s.bvh->bvh, sorted, 0, sorted.size(), occ);
+    else intersect_sorted(kernels, &s.bvh->bvh, sorted, 0, sorted.size(), hits);
+    const double t3 = thread_seconds();
+    benchmark::DoNotOptimize(hits.data());
+    benchmark::DoNotOptimize(occ.data());
+    given_seconds += t1 - t0;
+    sort_seconds += t2 - t1;
+    sorted_seconds += t3 - t1;
+    state.SetIterationTime(t3 - t1);
+  }
+  const double n = double(state.iterations()) * double(rays.size());
+  state.counters["mrays_per_s"] = n / sorted_seconds * 1e-6;
+  state.counters["given_mrays_per_s"] = n / given_seconds * 1e-6;
+  state.counters["speedup"] = given_seconds / sorted_seconds;
+  state.counters["sort_share"] = sort_seconds / sorted_seconds;  // of the sorted batch's time
+  state.counters["sorted"] = was_sorted;
+  state.counters["tree_mb"] = double(s.bvh->bytes()) * 1e-6;
+}
+// [ch09-order-bench]
+
 std::vector<std::unique_ptr<Scene>> scenes;
 
 [[maybe_unused]] const bool registered = [] {
@@ -106,9 +155,9 @@ std::vector<std::unique_ptr<Scene>> scenes;
     if (!root) break;
     const std::filesystem::path path = std::filesystem::path(root) / file;
     if (!std::filesystem::exists(path)) continue;
-    scenes.push_back(std::make_unique<Scene>(Scene{name, path, {}, nullptr, {}}));
+    scenes.push_back(std::make_unique<Scene>(Scene{name, path, {}, nullptr, {}, {}}));
   }
-  scenes.push_back(std::make_unique<Scene>(Scene{"sphere_870k", {}, {}, nullptr, {}}));
+  scenes.push_back(std::make_unique<Scene>(Scene{"sphere_870k", {}, {}, nullptr, {}, {}}));
   const Isa best = best_isa();
   for (auto& owned : scenes) {
     Scene* s = owned.get();
@@ -124,6 +173,10 @@ std::vector<std::unique_ptr<Scene>> scenes;
                                      isa, kDefaultInflight)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("order/" + s->name + "/" + std::string(ray_kind_name(kind))).c_str(), bm_order,
+                                   s, kind)
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond);
     }
   }
   return true;

@@ -16,7 +16,8 @@
 /// ISA's registers fit (BVH4 for scalar and SSE4, BVH8 for AVX2 and AVX-512), object splits
 /// (chapter 5 measures when spatial splits pay), and chapter 6's default layout with
 /// Möller-Trumbore: the ISA's fastest blocks unless the scene would not fit the memory budget,
-/// then the leanest (AccelInfo::choice says which rule chose).
+/// then the leanest (AccelInfo::choice says which rule chose). A batch of incoherent rays is
+/// traced in an order of RTK's choosing (chapter 9), its answers in the caller's order.
 #pragma once
 
 #include <cstddef>
@@ -31,6 +32,7 @@
 #include "01_base/ray.h"
 #include "01_base/triangle_mesh.h"
 #include "02_bvh2/trace_kernels.h"
+#include "09_inflight/ray_order.h"
 
 namespace rtk {
 
@@ -43,6 +45,9 @@ struct AccelConfig {
   /// Bytes the structure may take when `tri` is empty: a scene whose fastest layout would need
   /// more gets the leanest one (chapter 6). 0: half of the machine's physical memory.
   size_t memory_budget = 0;
+  /// Whether intersect() and occluded() sort a batch before tracing it (chapter 9): when the
+  /// batch is large and incoherent (the default), always, or never. The answers are the same.
+  RayOrderPolicy::Mode order = RayOrderPolicy::Mode::automatic;
 };
 
 /// What was built, with the configuration resolved to full names.
@@ -94,7 +99,8 @@ class Accel {
   Accel& operator=(Accel&&) noexcept;
 
   /// Finds the closest hit of every ray: hits[i] for rays[i] (the spans have the same length).
-  /// Invalid rays (rtk::is_valid) get a miss. Uses `threads` threads when there are enough rays.
+  /// Invalid rays (rtk::is_valid) get a miss. Uses `threads` threads when there are enough rays,
+  /// and traces a large incoherent batch sorted (AccelConfig::order).
   void intersect(std::span<const Ray> rays, std::span<Hit> hits) const;
 
   /// Whether each ray is blocked anywhere in [tnear, tfar]: occluded[i] = 1 or 0.
@@ -112,6 +118,8 @@ class Accel {
   std::shared_ptr<const void> structure_;  ///< the built structure, whatever its type
   const void* traced_ = nullptr;           ///< what the kernels read: the structure or a part of it
   TraceKernels kernels_;                   ///< resolved once, when the structure was built
+  RayOrderKey order_key_{Box3f{}};         ///< sort keys over the scene's box
+  RayOrderPolicy order_policy_;            ///< when a batch is sorted
 };
 
 /// The accepted `-accel` strings, full names (e.g. "bvh4.objectsplit").

@@ -88,6 +88,8 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   structure_ = std::move(built.owner);
   traced_ = built.traced;
   kernels_ = built.kernels;
+  order_key_ = RayOrderKey(merge(t0.bounds(), t1.bounds()));
+  order_policy_.mode = config.order;
 }
 
 }  // namespace rtk

@@ -243,6 +243,7 @@ TEST_CASE("cli: bad command lines fail with status 2 and name the option or file
       {trace + h + " -tri triangle4.exact", "-tri"},
       {trace + h + " -isa neon", "-isa"},
       {trace + h + " -threads 0", "-threads"},
+      {trace + h + " -order random", "-order: 'random' is not auto, sorted or given"},
       {trace + h + " -repeat x", "-repeat"},
       {trace + h + " -bogus 1", "unknown option '-bogus'"},
       {trace, "missing option -hits or -occl"},
@@ -372,4 +373,19 @@ TEST_CASE("cli: -motion refuses mismatched files naming both; bvh4mb without -mo
   REQUIRE(run_rtk("trace -rays " + work("few.rays") + " -hits " + work("y.hits") + " -i " + work("S0.obj")).status == 0);
   CHECK(run_rtk("compare " + work("x.hits") + " " + work("y.hits")).status == 0);
   CHECK(run_rtk(trace + " -accel bvh4mb.spatialsplit").status == 2);
+}
+
+TEST_CASE("cli: -order changes when each ray is traced, never the answer") {
+  make_rays("diffuse", work("o.rays"), 5000);  // incoherent, and larger than a sorted batch must be
+  const std::string trace = "trace -i " + scene_file() + " -rays " + work("o.rays");
+  for (const std::string order : {"given", "sorted", "auto"}) {
+    const Result hits = run_rtk(trace + " -order " + order + " -hits " + work("o_" + order + ".hits"));
+    REQUIRE_MESSAGE(hits.status == 0, hits.output);
+    const Result occl = run_rtk(trace + " -order " + order + " -occl " + work("o_" + order + ".occl"));
+    REQUIRE_MESSAGE(occl.status == 0, occl.output);
+  }
+  for (const std::string order : {"sorted", "auto"}) {
+    CHECK(rtk::read_file(work("o_" + order + ".hits")) == rtk::read_file(work("o_given.hits")));
+    CHECK(rtk::read_file(work("o_" + order + ".occl")) == rtk::read_file(work("o_given.occl")));
+  }
 }

@@ -1,0 +1,98 @@
+#include "09_inflight/ray_order.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace rtk {
+
+// [ch09-order-key-impl]
+RayOrderKey::RayOrderKey(const Box3f& scene) : lower_(scene.lower), scale_(0.0f) {
+  constexpr float cells = float(1 << kCellBitsPerAxis);
+  for (int axis = 0; axis < 3; ++axis) {
+    const float extent = scene.upper[axis] - scene.lower[axis];
+    const float s = cells / extent;
+    if (extent > 0.0f && std::isfinite(s)) scale_[axis] = s;
+  }
+}
+
+// [ch09-order-key-impl]
+
+// [ch09-sort-rays]
+bool sort_rays(std::span<const Ray> rays, const RayOrderKey& key, const RayOrderPolicy& policy,
+               SortedRays& sorted) {
+  sorted.rays.clear();
+  sorted.from.clear();
+  using Mode = RayOrderPolicy::Mode;
+  const size_t n = rays.size();
+  if (policy.mode == Mode::never || n < 2) return false;
+  if (n > size_t(UINT32_MAX)) throw std::invalid_argument("sort_rays: more than 2^32 - 1 rays");
+  if (policy.mode == Mode::automatic) {
+    if (n < policy.min_rays) return false;
+    // A sample of neighbouring pairs says whether the batch is coherent already, before any
+    // work is spent on the rest.
+    const size_t samples = std::clamp<size_t>(policy.samples, 1, n - 1);
+    size_t coherent = 0;
+    for (size_t s = 0; s < samples; ++s) {
+      const size_t i = s * (n - 1) / samples;
+      coherent += key(rays[i]) == key(rays[i + 1]);
+    }
+    if (double(coherent) >= policy.coherent_fraction * double(samples)) return false;
+  }
+  // A counting sort: count each key, turn the counts into each key's first place, then copy
+  // every ray to its key's next place. Equal keys keep the order they were given in. The rays
+  // are read in their order and written in sorted order, rather than read in sorted order: a
+  // processor keeps many writes to scattered places in flight, but a read that misses the
+  // caches holds up the copy.
+  std::vector<uint16_t> keys(n);
+  std::vector<uint32_t> place(kOrderKeys, 0);
+  for (size_t i = 0; i < n; ++i) ++place[keys[i] = uint16_t(key(rays[i]))];
+  uint32_t first = 0;
+  for (uint32_t& p : place) first += std::exchange(p, first);
+  sorted.rays.resize(n);
+  sorted.from.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t to = place[keys[i]]++;
+    sorted.rays[to] = rays[i];
+    sorted.from[to] = uint32_t(i);
+  }
+  return true;
+}
+// [ch09-sort-rays]
+
+namespace {
+
+/// Rays per call of a kernel: enough that the call's cost is spread thin, few enough that
+/// their answers (4 KiB of closest hits) stay in the first-level cache until they are written.
+constexpr size_t kRaysPerCall = 256;
+
+template <class Answer, class Kernel>
+void trace_sorted(Kernel kernel, const void* structure, const SortedRays& sorted, size_t first,
+                  size_t count, std::span<Answer> answers) {
+  if (first > sorted.size() || count > sorted.size() - first)
+    throw std::invalid_argument("trace_sorted: the range is not inside the sorted batch");
+  if (answers.size() != sorted.size())
+    throw std::invalid_argument("trace_sorted: the answers are not one per ray of the batch");
+  std::array<Answer, kRaysPerCall> found;
+  for (size_t begin = first; begin < first + count; begin += kRaysPerCall) {
+    const size_t n = std::min(kRaysPerCall, first + count - begin);
+    kernel(structure, std::span<const Ray>(sorted.rays.data() + begin, n), std::span<Answer>(found.data(), n));
+    for (size_t i = 0; i < n; ++i) answers[sorted.from[begin + i]] = found[i];
+  }
+}
+
+}  // namespace
+
+void intersect_sorted(const TraceKernels& kernels, const void* structure, const SortedRays& sorted,
+                      size_t first, size_t count, std::span<Hit> hits) {
+  trace_sorted(kernels.intersect, structure, sorted, first, count, hits);
+}
+
+void occluded_sorted(const TraceKernels& kernels, const void* structure, const SortedRays& sorted,
+                     size_t first, size_t count, std::span<uint8_t> occluded) {
+  trace_sorted(kernels.occluded, structure, sorted, first, count, occluded);
+}
+
+}  // namespace rtk
