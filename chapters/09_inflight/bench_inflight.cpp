@@ -107,7 +107,10 @@ void bm_order(benchmark::State& state, Scene* scene, RayKind kind) {
   const bool occlusion = kind == RayKind::shadow;
   const TraceKernels kernels = RTK_PICK_ISA(best_isa(), intersector_kernels<8>)(kTri);
   const RayOrderKey key(s.mesh.bounds());
-  const RayOrderPolicy policy;  // the default: sort a large batch unless it is coherent already
+  // The default policy, as chapter 10 applies it: a large batch of a large structure is sorted
+  // unless it is coherent already.
+  RayOrderPolicy policy;
+  if (s.bvh->bytes() < policy.min_structure_bytes) policy.mode = RayOrderPolicy::Mode::never;
   std::vector<Hit> hits(rays.size());
   std::vector<uint8_t> occ(rays.size());
   SortedRays sorted;

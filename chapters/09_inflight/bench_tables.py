@@ -5,6 +5,7 @@ the same benchmark (above 1: rays in flight are faster).
 
   python3 chapters/09_inflight/bench_tables.py ablation ch09.json  # rays in flight x prefetch
   python3 chapters/09_inflight/bench_tables.py isa ch09.json       # the default, on each ISA
+  python3 chapters/09_inflight/bench_tables.py order ch09.json     # a batch sorted against as given
 """
 import math
 import os
@@ -70,7 +71,34 @@ def isa(benchmarks):
           lambda b: f"{int(b['triangles']):,} | {b['tree_mb']:.1f}")
 
 
+def order(benchmarks):
+    """One row per scene, a column per kind of ray: the batch's time as given over its time
+    sorted, the sort included, and the sort's share of the sorted time ("as given" where the
+    policy leaves the batch unsorted)."""
+    rows = defaultdict(dict)
+    for b in benchmarks:
+        parts = b["name"].replace("/manual_time", "").split("/")
+        if len(parts) == 3 and parts[0] == "order":
+            rows[parts[1]][parts[2]] = b
+    if not rows:
+        sys.exit("bench_tables.py: no order benchmarks in the file")
+    print("| scene | tree MB | " + " | ".join(f"{k}: sorted / given | {k}: sort's share" for k in KINDS) + " |")
+    print("|---|---:|" + "---:|---:|" * len(KINDS))
+    for scene in sorted(rows, key=lambda s: SCENES.index(s) if s in SCENES else 99):
+        r = rows[scene]
+        cells = []
+        for k in KINDS:
+            if k not in r:
+                cells += ["-", "-"]
+            elif not r[k]["sorted"]:
+                cells += ["as given", "-"]
+            else:
+                cells += [f"{r[k]['speedup']:.2f}", f"{100 * r[k]['sort_share']:.0f} %"]
+        tree = next(iter(r.values()))["tree_mb"]
+        print(f"| {scene} | {tree:.1f} | " + " | ".join(cells) + " |")
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("ablation", "isa"):
+    if len(sys.argv) != 3 or sys.argv[1] not in ("ablation", "isa", "order"):
         sys.exit(__doc__)
-    {"ablation": ablation, "isa": isa}[sys.argv[1]](runs(sys.argv[2]))
+    {"ablation": ablation, "isa": isa, "order": order}[sys.argv[1]](runs(sys.argv[2]))

@@ -9,12 +9,14 @@
 namespace rtk {
 
 // [ch09-order-key-impl]
-RayOrderKey::RayOrderKey(const Box3f& scene) : lower_(scene.lower), scale_(0.0f) {
+RayOrderKey::RayOrderKey(const Box3f& scene) {
   constexpr float cells = float(1 << kCellBitsPerAxis);
   for (int axis = 0; axis < 3; ++axis) {
     const float extent = scene.upper[axis] - scene.lower[axis];
     const float s = cells / extent;
-    if (extent > 0.0f && std::isfinite(s)) scale_[axis] = s;
+    const bool usable = extent > 0.0f && std::isfinite(s);
+    lower_[axis] = usable ? scene.lower[axis] : 0.0f;
+    scale_[axis] = usable ? s : 0.0f;
   }
 }
 

@@ -227,6 +227,8 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
   kernels_ = built.kernels;
   order_key_ = RayOrderKey(mesh.bounds());
   order_policy_.mode = config.order;
+  if (config.order == RayOrderPolicy::Mode::automatic && info_.bytes < order_policy_.min_structure_bytes)
+    order_policy_.mode = RayOrderPolicy::Mode::never;
 }
 
 Accel::~Accel() = default;

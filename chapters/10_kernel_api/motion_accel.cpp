@@ -90,6 +90,8 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   kernels_ = built.kernels;
   order_key_ = RayOrderKey(merge(t0.bounds(), t1.bounds()));
   order_policy_.mode = config.order;
+  if (config.order == RayOrderPolicy::Mode::automatic && info_.bytes < order_policy_.min_structure_bytes)
+    order_policy_.mode = RayOrderPolicy::Mode::never;
 }
 
 }  // namespace rtk

@@ -231,8 +231,8 @@ TEST_CASE("ch10: unsupported configurations are refused with the supported list"
 
 TEST_CASE("ch10: a batch traced sorted gives the answers of the batch traced as given") {
   // Chapter 9's order changes when each ray is traced, never its answer: the same bits with the
-  // order always, never and automatic, on one and on two threads, for incoherent rays (sorted
-  // by default) and primary rays from one point (traced as given by default). The batches are
+  // order always, never and automatic (which traces this small scene's batches as given), on
+  // one and on two threads, for incoherent rays and for rays from one point. The batches are
   // larger than the policy's minimum and cross a thread's share.
   const TriangleMesh mesh = mixed_scene();
   std::vector<Ray> incoherent = test::random_rays(mesh.bounds(), 6000, 611);
