@@ -33,11 +33,13 @@ def spread(values, digits=2):
 
 
 def describe(tracer):
-    """rtk:avx512:bvh8.objectsplit:triangle8.moeller -> 'AVX-512, BVH8, triangle8' (+ spatial splits)."""
-    _, isa, accel, tri = tracer.split(":")
+    """rtk:avx512:bvh8.objectsplit:triangle8.moeller -> 'AVX-512, BVH8, triangle8' (+ spatial splits,
+    + every batch as given for a name ending in :given)."""
+    _, isa, accel, tri, *given = tracer.split(":")
     structure, split = accel.split(".")
     text = f"{ISA_NAMES.get(isa, isa)}, {structure.upper()}, {tri.split('.')[0]}"
-    return text + (", spatial splits" if split == "spatialsplit" else "")
+    text += ", spatial splits" if split == "spatialsplit" else ""
+    return text + (", every batch as given" if given else "")
 
 
 def trace_ratios(path):
@@ -51,6 +53,17 @@ def trace_ratios(path):
     return ratios, data["context"].get("embree", "")
 
 
+def order_gains(path):
+    """{kind: [Embree's speed in RTK's order / as given, over the real meshes]}."""
+    _, runs = benchmarks(path)
+    gains = {}
+    for b in runs:
+        m = re.match(r"trace/([^/]+)/([^/]+)/embree:rtk-order/", b["name"])
+        if m and m.group(1) not in PROCEDURAL:
+            gains.setdefault(m.group(2), []).append(b["order_gain"])
+    return gains
+
+
 def standing(paths):
     print("| RTK's kernels | against Embree's | primary | diffuse | shadow |")
     print("|---|---|---:|---:|---:|")
@@ -60,6 +73,10 @@ def standing(paths):
         for tracer, kinds in ratios.items():
             cells = " | ".join(spread(kinds.get(k, [])) for k in ("primary", "diffuse", "shadow"))
             print(f"| {describe(tracer)} | {against} | {cells} |")
+        gains = order_gains(path)
+        if gains:
+            cells = " | ".join(spread(gains.get(k, [])) for k in ("primary", "diffuse", "shadow"))
+            print(f"| (not RTK) Embree's own speed on the rays in RTK's order, over as given | {against} | {cells} |")
 
 
 def build(path):
