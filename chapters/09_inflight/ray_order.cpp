@@ -80,7 +80,8 @@ void trace_sorted(Kernel kernel, const void* structure, const SortedRays& sorted
   std::array<Answer, kRaysPerCall> found;
   for (size_t begin = first; begin < first + count; begin += kRaysPerCall) {
     const size_t n = std::min(kRaysPerCall, first + count - begin);
-    kernel(structure, std::span<const Ray>(sorted.rays.data() + begin, n), std::span<Answer>(found.data(), n));
+    kernel(structure, std::span<const Ray>(sorted.rays.data() + begin, n),
+           std::span<Answer>(found.data(), n));
     for (size_t i = 0; i < n; ++i) answers[sorted.from[begin + i]] = found[i];
   }
 }

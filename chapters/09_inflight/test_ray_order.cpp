@@ -39,7 +39,8 @@ void occluded_if_odd(const void*, std::span<const Ray> rays, std::span<uint8_t> 
 
 // Diffuse rays of a small scene, each ray's tnear set to its index.
 std::vector<Ray> numbered_diffuse_rays(size_t n) {
-  std::vector<Ray> rays = generate_rays(test::make_sphere(12, 24, {0.5f, 0.5f, 0.5f}, 0.4f), RayKind::diffuse, n, 3);
+  std::vector<Ray> rays =
+      generate_rays(test::make_sphere(12, 24, {0.5f, 0.5f, 0.5f}, 0.4f), RayKind::diffuse, n, 3);
   for (size_t i = 0; i < rays.size(); ++i) rays[i].tnear = float(i);
   return rays;
 }
@@ -62,7 +63,8 @@ TEST_CASE("the key is the octant above the Morton code of the origin's cell") {
   // Outside the box: the nearest cell.
   CHECK(key(ray_at({-5, 0.01f, 7}, {1, 1, 1})) == key(ray_at({0, 0.01f, 1}, {1, 1, 1})));
   // NaN and infinite rays get a key like any other.
-  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const float nan = std::numeric_limits<float>::quiet_NaN(),
+              inf = std::numeric_limits<float>::infinity();
   CHECK(key(ray_at({nan, nan, nan}, {nan, 1, 1})) < kOrderKeys);
   CHECK(key(ray_at({inf, -inf, 0}, {1, 1, 1})) < kOrderKeys);
   // An empty or flat box puts every origin in one cell along the axes it lacks.
@@ -105,7 +107,8 @@ TEST_CASE("the policy sorts large incoherent batches only") {
   const std::vector<Ray> diffuse = numbered_diffuse_rays(policy.min_rays);
   CHECK(sort_rays(diffuse, key, policy, sorted));
   // Fewer rays than min_rays: as given.
-  CHECK_FALSE(sort_rays(std::span<const Ray>(diffuse).first(policy.min_rays - 1), key, policy, sorted));
+  CHECK_FALSE(
+      sort_rays(std::span<const Ray>(diffuse).first(policy.min_rays - 1), key, policy, sorted));
   CHECK(sorted.size() == 0);
   // One origin and one octant (a pinhole camera's rays into one quadrant): coherent already.
   std::vector<Ray> camera(policy.min_rays, ray_at({0.5f, 0.5f, 2.0f}, {0.1f, 0.2f, -1.0f}));
@@ -141,5 +144,6 @@ TEST_CASE("a sorted batch's answers land where the caller expects them, from any
   }
   CHECK_THROWS_AS(intersect_sorted(kernels, nullptr, sorted, 999, 2, hits), std::invalid_argument);
   std::vector<Hit> short_hits(10);
-  CHECK_THROWS_AS(intersect_sorted(kernels, nullptr, sorted, 0, 10, short_hits), std::invalid_argument);
+  CHECK_THROWS_AS(intersect_sorted(kernels, nullptr, sorted, 0, 10, short_hits),
+                  std::invalid_argument);
 }
