@@ -202,7 +202,7 @@ string(APPEND text "scene and kind (seed 1); ${date}; ${cpus} CPUs, load average
 string(APPEND text "**Tracing (single thread): RTK's speed as a ratio to Embree's, measured in pairs** (each ")
 string(APPEND text "iteration of an RTK benchmark traces the rays with Embree too, just before RTK, and the ratio is ")
 string(APPEND text "that of the summed times). The column `embree:rtk-order` is not RTK: it is Embree's own ")
-string(APPEND text "speed on the rays sorted in RTK's order (chapter 9, the sort not timed) over its speed on the ")
+string(APPEND text "speed on the rays sorted in RTK's order (the sort not timed) over its speed on the ")
 string(APPEND text "rays as given; `given` marks RTK's default tracing every batch as given. ")
 string(APPEND text "Primary and diffuse rays ask for the closest hit, shadow rays for occlusion. Agreement is the ")
 string(APPEND text "lowest, over the RTK variants, share of rays whose answer is Embree's (same hit or miss, same ")
