@@ -225,9 +225,15 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
   structure_ = std::move(built.owner);
   traced_ = built.traced;
   kernels_ = built.kernels;
-  order_key_ = RayOrderKey(mesh.bounds());
-  order_policy_.mode = config.order;
-  if (config.order == RayOrderPolicy::Mode::automatic && info_.bytes < order_policy_.min_structure_bytes)
+  choose_order(mesh.bounds(), config.order);
+}
+
+void Accel::choose_order(const Box3f& scene, RayOrderPolicy::Mode mode) {
+  order_key_ = RayOrderKey(scene);
+  order_policy_.mode = mode;
+  // A structure that stays in the second-level cache gains less from any order than the sort
+  // costs (chapter 9).
+  if (mode == RayOrderPolicy::Mode::automatic && info_.bytes < order_policy_.min_structure_bytes)
     order_policy_.mode = RayOrderPolicy::Mode::never;
 }
 

@@ -114,6 +114,10 @@ class Accel {
   Tracer tracer() const { return {traced_, kernels_}; }
 
  private:
+  /// Sort keys over the scene's box `scene` (both positions for motion), and when a batch is
+  /// sorted: as `mode` says, except that a small structure is never sorted automatically.
+  void choose_order(const Box3f& scene, RayOrderPolicy::Mode mode);
+
   AccelInfo info_;
   std::shared_ptr<const void> structure_;  ///< the built structure, whatever its type
   const void* traced_ = nullptr;           ///< what the kernels read: the structure or a part of it

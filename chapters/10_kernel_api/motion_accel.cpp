@@ -88,10 +88,7 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   structure_ = std::move(built.owner);
   traced_ = built.traced;
   kernels_ = built.kernels;
-  order_key_ = RayOrderKey(merge(t0.bounds(), t1.bounds()));
-  order_policy_.mode = config.order;
-  if (config.order == RayOrderPolicy::Mode::automatic && info_.bytes < order_policy_.min_structure_bytes)
-    order_policy_.mode = RayOrderPolicy::Mode::never;
+  choose_order(merge(t0.bounds(), t1.bounds()), config.order);
 }
 
 }  // namespace rtk
