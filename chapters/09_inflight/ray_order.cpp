@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 namespace rtk {
 
 // [ch09-order-key-impl]
@@ -22,9 +25,17 @@ RayOrderKey::RayOrderKey(const Box3f& scene) {
 
 // [ch09-order-key-impl]
 
+namespace {
+
+/// The fewest rays a thread of the sort takes: fewer would cost more in counts to add up than
+/// they save.
+constexpr size_t kRaysPerPart = size_t(1) << 14;
+
+}  // namespace
+
 // [ch09-sort-rays]
 bool sort_rays(std::span<const Ray> rays, const RayOrderKey& key, const RayOrderPolicy& policy,
-               SortedRays& sorted) {
+               SortedRays& sorted, int threads) {
   sorted.rays.clear();
   sorted.from.clear();
   using Mode = RayOrderPolicy::Mode;
@@ -47,19 +58,36 @@ bool sort_rays(std::span<const Ray> rays, const RayOrderKey& key, const RayOrder
   // every ray to its key's next place. Equal keys keep the order they were given in. The rays
   // are read in their order and written in sorted order, rather than read in sorted order: a
   // processor keeps many writes to scattered places in flight, but a read that misses the
-  // caches holds up the copy.
+  // caches holds up the copy. With several threads, each counts and copies one contiguous
+  // part of the batch, and a key's places go to the parts in turn, so the order is the same.
+  const size_t parts = std::clamp<size_t>(size_t(threads), 1, n / kRaysPerPart + 1);
+  auto part_range = [&](size_t p) { return std::pair{p * n / parts, (p + 1) * n / parts}; };
+  auto for_each_part = [&](auto&& body) {
+    if (parts == 1) return body(size_t(0));
+    tbb::task_arena arena{int(parts)};
+    arena.execute([&] { tbb::parallel_for(size_t(0), parts, [&](size_t p) { body(p); }); });
+  };
   std::vector<uint16_t> keys(n);
-  std::vector<uint32_t> place(kOrderKeys, 0);
-  for (size_t i = 0; i < n; ++i) ++place[keys[i] = uint16_t(key(rays[i]))];
+  std::vector<uint32_t> place(parts * kOrderKeys, 0);  // place[p * kOrderKeys + key]
+  for_each_part([&](size_t p) {
+    uint32_t* count = place.data() + p * kOrderKeys;
+    const auto [begin, end] = part_range(p);
+    for (size_t i = begin; i < end; ++i) ++count[keys[i] = uint16_t(key(rays[i]))];
+  });
   uint32_t first = 0;
-  for (uint32_t& p : place) first += std::exchange(p, first);
+  for (uint32_t k = 0; k < kOrderKeys; ++k)
+    for (size_t p = 0; p < parts; ++p) first += std::exchange(place[p * kOrderKeys + k], first);
   sorted.rays.resize(n);
   sorted.from.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    const uint32_t to = place[keys[i]]++;
-    sorted.rays[to] = rays[i];
-    sorted.from[to] = uint32_t(i);
-  }
+  for_each_part([&](size_t p) {
+    uint32_t* next = place.data() + p * kOrderKeys;
+    const auto [begin, end] = part_range(p);
+    for (size_t i = begin; i < end; ++i) {
+      const uint32_t to = next[keys[i]]++;
+      sorted.rays[to] = rays[i];
+      sorted.from[to] = uint32_t(i);
+    }
+  });
   return true;
 }
 // [ch09-sort-rays]

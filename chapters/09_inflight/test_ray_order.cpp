@@ -100,6 +100,22 @@ TEST_CASE("sorting is a stable permutation in key order, the rays copied bit for
   CHECK_FALSE(std::is_sorted(sorted.from.begin(), sorted.from.end()));
 }
 
+TEST_CASE("sorting on several threads gives the order of one thread") {
+  // Enough rays for three threads to take a part each.
+  const std::vector<Ray> rays = numbered_diffuse_rays(50000);
+  const RayOrderKey key(kUnitBox);
+  RayOrderPolicy always;
+  always.mode = RayOrderPolicy::Mode::always;
+  SortedRays one, many;
+  REQUIRE(sort_rays(rays, key, always, one, 1));
+  for (const int threads : {2, 3}) {
+    CAPTURE(threads);
+    REQUIRE(sort_rays(rays, key, always, many, threads));
+    CHECK(many.from == one.from);
+    CHECK(std::memcmp(many.rays.data(), one.rays.data(), one.size() * sizeof(Ray)) == 0);
+  }
+}
+
 TEST_CASE("the policy sorts large incoherent batches only") {
   const RayOrderKey key(kUnitBox);
   SortedRays sorted;

@@ -258,7 +258,7 @@ void trace_batch(std::span<const Ray> rays, const RayOrderKey& key, const RayOrd
   SortedRays window;
   for (size_t first = 0; first < rays.size(); first += kOrderWindow) {
     const size_t n = std::min(kOrderWindow, rays.size() - first);
-    if (sort_rays(rays.subspan(first, n), key, policy, window))
+    if (sort_rays(rays.subspan(first, n), key, policy, window, threads))
       run_parallel(n, threads, [&](size_t begin, size_t end) { sorted(window, first, begin, end); });
     else
       run_parallel(n, threads, [&](size_t begin, size_t end) { given(first + begin, first + end); });
