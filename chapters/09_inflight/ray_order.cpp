@@ -7,11 +7,9 @@
 #include <utility>
 
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 namespace rtk {
 
-// [ch09-order-key-impl]
 RayOrderKey::RayOrderKey(const Box3f& scene) {
   constexpr float cells = float(1 << kCellBitsPerAxis);
   for (int axis = 0; axis < 3; ++axis) {
@@ -22,8 +20,6 @@ RayOrderKey::RayOrderKey(const Box3f& scene) {
     scale_[axis] = usable ? s : 0.0f;
   }
 }
-
-// [ch09-order-key-impl]
 
 namespace {
 
@@ -64,8 +60,7 @@ bool sort_rays(std::span<const Ray> rays, const RayOrderKey& key, const RayOrder
   auto part_range = [&](size_t p) { return std::pair{p * n / parts, (p + 1) * n / parts}; };
   auto for_each_part = [&](auto&& body) {
     if (parts == 1) return body(size_t(0));
-    tbb::task_arena arena{int(parts)};
-    arena.execute([&] { tbb::parallel_for(size_t(0), parts, [&](size_t p) { body(p); }); });
+    tbb::parallel_for(size_t(0), parts, [&](size_t p) { body(p); });
   };
   std::vector<uint16_t> keys(n);
   std::vector<uint32_t> place(parts * kOrderKeys, 0);  // place[p * kOrderKeys + key]

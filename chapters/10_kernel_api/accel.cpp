@@ -155,19 +155,22 @@ void check_threads(int threads) {
                                 std::to_string(kMaxThreads));
 }
 
-// Runs body(begin, end) over [0, n) in chunks on `threads` threads (inline for one thread or
-// few rays, so that single-threaded timings carry no scheduling cost at all).
+// Runs work() on `threads` threads: in a task arena of that many, or inline for one thread, so
+// that single-threaded timings carry no scheduling cost at all.
+template <class Work>
+void with_threads(int threads, const Work& work) {
+  if (threads <= 1) return work();
+  tbb::task_arena arena(threads);
+  arena.execute(work);
+}
+
+// Runs body(begin, end) over [0, n) in chunks on the threads of the current task arena (inline
+// for one thread or few rays).
 template <class Body>
 void run_parallel(size_t n, int threads, const Body& body) {
-  if (threads <= 1 || n <= kRaysPerTask) {
-    body(size_t(0), n);
-    return;
-  }
-  tbb::task_arena arena(threads);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kRaysPerTask),
-                      [&](const tbb::blocked_range<size_t>& r) { body(r.begin(), r.end()); });
-  });
+  if (threads <= 1 || n <= kRaysPerTask) return body(size_t(0), n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kRaysPerTask),
+                    [&](const tbb::blocked_range<size_t>& r) { body(r.begin(), r.end()); });
 }
 
 }  // namespace
@@ -255,14 +258,19 @@ constexpr size_t kOrderWindow = size_t(1) << 19;
 template <class Given, class Sorted>
 void trace_batch(std::span<const Ray> rays, const RayOrderKey& key, const RayOrderPolicy& policy, int threads,
                  const Given& given, const Sorted& sorted) {
-  SortedRays window;
-  for (size_t first = 0; first < rays.size(); first += kOrderWindow) {
-    const size_t n = std::min(kOrderWindow, rays.size() - first);
-    if (sort_rays(rays.subspan(first, n), key, policy, window, threads))
-      run_parallel(n, threads, [&](size_t begin, size_t end) { sorted(window, first, begin, end); });
-    else
-      run_parallel(n, threads, [&](size_t begin, size_t end) { given(first + begin, first + end); });
-  }
+  // One task arena for the sorts and the traces (TBB warns when arenas come and go faster
+  // than its threads move between them), and none for a batch too small to share.
+  if (rays.size() <= kRaysPerTask) threads = 1;
+  with_threads(threads, [&] {
+    SortedRays window;
+    for (size_t first = 0; first < rays.size(); first += kOrderWindow) {
+      const size_t n = std::min(kOrderWindow, rays.size() - first);
+      if (sort_rays(rays.subspan(first, n), key, policy, window, threads))
+        run_parallel(n, threads, [&](size_t begin, size_t end) { sorted(window, first, begin, end); });
+      else
+        run_parallel(n, threads, [&](size_t begin, size_t end) { given(first + begin, first + end); });
+    }
+  });
 }
 
 }  // namespace
