@@ -109,8 +109,7 @@ void bm_order(benchmark::State& state, Scene* scene, RayKind kind) {
   const RayOrderKey key(s.mesh.bounds());
   // The default policy, as chapter 10 applies it: a large batch of a large structure is sorted
   // unless it is coherent already.
-  RayOrderPolicy policy;
-  if (s.bvh->bytes() < policy.min_structure_bytes) policy.mode = RayOrderPolicy::Mode::never;
+  const RayOrderPolicy policy = RayOrderPolicy::for_structure(s.bvh->bytes());
   std::vector<Hit> hits(rays.size());
   std::vector<uint8_t> occ(rays.size());
   SortedRays sorted;

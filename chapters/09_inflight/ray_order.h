@@ -73,7 +73,7 @@ class RayOrderKey {
 // [ch09-order-policy]
 /// When a batch is worth sorting. A batch of fewer than `min_rays` rays is traced as given
 /// (too few rays to share much whatever their order), as is every batch of a small structure
-/// (the caller applies min_structure_bytes, which sort_rays cannot see), and one in which at
+/// (for_structure() applies min_structure_bytes, which sort_rays cannot see), and one in which at
 /// least `coherent_fraction` of `samples` neighbouring pairs, spread over the batch, already
 /// share octant and cell: primary rays from a pinhole, shadow rays toward one light in the
 /// order of the pixels they came from.
@@ -88,6 +88,14 @@ struct RayOrderPolicy {
   /// Sorting changes nothing but the order of the work, never an answer; `always` sorts
   /// whatever the batch looks like, `never` traces every batch as given.
   enum class Mode { automatic, always, never } mode = Mode::automatic;
+
+  /// The policy for batches of a structure of `bytes` bytes: `mode`, except that automatic
+  /// becomes never below min_structure_bytes.
+  static RayOrderPolicy for_structure(size_t bytes, Mode mode = Mode::automatic) {
+    RayOrderPolicy policy;
+    policy.mode = mode == Mode::automatic && bytes < policy.min_structure_bytes ? Mode::never : mode;
+    return policy;
+  }
 };
 // [ch09-order-policy]
 

@@ -233,11 +233,7 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
 
 void Accel::choose_order(const Box3f& scene, RayOrderPolicy::Mode mode) {
   order_key_ = RayOrderKey(scene);
-  order_policy_.mode = mode;
-  // A structure that stays in the second-level cache gains less from any order than the sort
-  // costs (chapter 9).
-  if (mode == RayOrderPolicy::Mode::automatic && info_.bytes < order_policy_.min_structure_bytes)
-    order_policy_.mode = RayOrderPolicy::Mode::never;
+  order_policy_ = RayOrderPolicy::for_structure(info_.bytes, mode);
 }
 
 Accel::~Accel() = default;
@@ -252,12 +248,16 @@ namespace {
 /// enough in any scene for neighbours in the order to share nodes.
 constexpr size_t kOrderWindow = size_t(1) << 19;
 
-/// Traces a batch in windows, each sorted when the policy says so (chapter 9), on `threads`
-/// threads. `given(begin, end)` traces rays [begin, end) as given; `sorted(window, first,
-/// begin, end)` traces copies [begin, end) of a window sorted from rays [first, ...).
-template <class Given, class Sorted>
-void trace_batch(std::span<const Ray> rays, const RayOrderKey& key, const RayOrderPolicy& policy, int threads,
-                 const Given& given, const Sorted& sorted) {
+/// Traces rays[i] into answers[i] with `kernel` (closest hits or occlusion) in windows, each
+/// sorted when the policy says so and then traced by `in_order` (chapter 9's intersect_sorted
+/// or occluded_sorted), on `threads` threads.
+template <class Answer>
+void trace_batch(std::span<const Ray> rays, std::span<Answer> answers,
+                 void (*kernel)(const void*, std::span<const Ray>, std::span<Answer>),
+                 void (*in_order)(const TraceKernels&, const void*, const SortedRays&, size_t, size_t,
+                                  std::span<Answer>),
+                 const TraceKernels& kernels, const void* structure, const RayOrderKey& key,
+                 const RayOrderPolicy& policy, int threads) {
   // One task arena for the sorts and the traces (TBB warns when arenas come and go faster
   // than its threads move between them), and none for a batch too small to share.
   if (rays.size() <= kRaysPerTask) threads = 1;
@@ -265,10 +265,15 @@ void trace_batch(std::span<const Ray> rays, const RayOrderKey& key, const RayOrd
     SortedRays window;
     for (size_t first = 0; first < rays.size(); first += kOrderWindow) {
       const size_t n = std::min(kOrderWindow, rays.size() - first);
+      const std::span<Answer> out = answers.subspan(first, n);
       if (sort_rays(rays.subspan(first, n), key, policy, window, threads))
-        run_parallel(n, threads, [&](size_t begin, size_t end) { sorted(window, first, begin, end); });
+        run_parallel(n, threads, [&](size_t begin, size_t end) {
+          in_order(kernels, structure, window, begin, end - begin, out);
+        });
       else
-        run_parallel(n, threads, [&](size_t begin, size_t end) { given(first + begin, first + end); });
+        run_parallel(n, threads, [&](size_t begin, size_t end) {
+          kernel(structure, rays.subspan(first + begin, end - begin), out.subspan(begin, end - begin));
+        });
     }
   });
 }
@@ -277,26 +282,14 @@ void trace_batch(std::span<const Ray> rays, const RayOrderKey& key, const RayOrd
 
 void Accel::intersect(std::span<const Ray> rays, std::span<Hit> hits) const {
   if (rays.size() != hits.size()) throw std::invalid_argument("intersect: rays and hits differ in length");
-  trace_batch(
-      rays, order_key_, order_policy_, info_.threads,
-      [&](size_t begin, size_t end) {
-        kernels_.intersect(traced_, rays.subspan(begin, end - begin), hits.subspan(begin, end - begin));
-      },
-      [&](const SortedRays& window, size_t first, size_t begin, size_t end) {
-        intersect_sorted(kernels_, traced_, window, begin, end - begin, hits.subspan(first, window.size()));
-      });
+  trace_batch(rays, hits, kernels_.intersect, intersect_sorted, kernels_, traced_, order_key_, order_policy_,
+              info_.threads);
 }
 
 void Accel::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
   if (rays.size() != occluded.size()) throw std::invalid_argument("occluded: rays and answers differ in length");
-  trace_batch(
-      rays, order_key_, order_policy_, info_.threads,
-      [&](size_t begin, size_t end) {
-        kernels_.occluded(traced_, rays.subspan(begin, end - begin), occluded.subspan(begin, end - begin));
-      },
-      [&](const SortedRays& window, size_t first, size_t begin, size_t end) {
-        occluded_sorted(kernels_, traced_, window, begin, end - begin, occluded.subspan(first, window.size()));
-      });
+  trace_batch(rays, occluded, kernels_.occluded, occluded_sorted, kernels_, traced_, order_key_,
+              order_policy_, info_.threads);
 }
 // [ch10-intersect]
 
