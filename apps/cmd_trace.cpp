@@ -35,7 +35,7 @@ double per_second_millions(size_t count, double seconds) {
 int run_trace(std::span<const std::string_view> args) {
   const Options options(
       "trace", args,
-      {.with_value = {"i", "motion", "rays", "hits", "occl", "accel", "tri", "isa", "order", "threads", "repeat"}, .flags = {}});
+      {.with_value = {"i", "motion", "rays", "hits", "occl", "accel", "tri", "isa", "order", "packets", "threads", "repeat"}, .flags = {}});
   // Step 1: the command line, all of it checked before any file is read.
   const std::string scene = options.required("i");
   // -motion: the same scene at shutter time 1 (chapter 8); each ray's time picks the moment.
@@ -59,6 +59,10 @@ int run_trace(std::span<const std::string_view> args) {
   else if (order == "sorted") config.order = RayOrderPolicy::Mode::always;
   else if (order == "given") config.order = RayOrderPolicy::Mode::never;
   else throw options.error("-order: '" + order + "' is not auto, sorted or given");
+  // -packets: whether a batch traced as given goes in packets where its rays allow (chapter 9).
+  const std::string packets = options.get("packets", "on");
+  if (packets == "on" || packets == "off") config.packets = packets == "on";
+  else throw options.error("-packets: '" + packets + "' is not on or off");
   const size_t repeat = options.get_count("repeat", 1, 1, 1000);
   // Refuses an unknown -accel or -tri before a large scene is loaded (with -motion, the motion
   // structure's strings are checked when it is built).

@@ -228,6 +228,7 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
   structure_ = std::move(built.owner);
   traced_ = built.traced;
   kernels_ = built.kernels;
+  given_ = config.packets && built.packets.intersect ? built.packets : built.kernels;
   choose_order(mesh.bounds(), config.order);
 }
 
@@ -248,12 +249,13 @@ namespace {
 /// enough in any scene for neighbours in the order to share nodes.
 constexpr size_t kOrderWindow = size_t(1) << 19;
 
-/// Traces rays[i] into answers[i] with `kernel` (closest hits or occlusion) in windows, each
-/// sorted when the policy says so and then traced by `in_order` (chapter 9's intersect_sorted
-/// or occluded_sorted), on `threads` threads.
+/// Traces rays[i] into answers[i] in windows, each sorted when the policy says so and then
+/// traced by `in_order` (chapter 9's intersect_sorted or occluded_sorted, one ray at a time
+/// with `kernels`), or else traced as given by `given` (closest hits or occlusion: in packets
+/// where the configuration has them), on `threads` threads.
 template <class Answer>
 void trace_batch(std::span<const Ray> rays, std::span<Answer> answers,
-                 void (*kernel)(const void*, std::span<const Ray>, std::span<Answer>),
+                 void (*given)(const void*, std::span<const Ray>, std::span<Answer>),
                  void (*in_order)(const TraceKernels&, const void*, const SortedRays&, size_t, size_t,
                                   std::span<Answer>),
                  const TraceKernels& kernels, const void* structure, const RayOrderKey& key,
@@ -272,7 +274,7 @@ void trace_batch(std::span<const Ray> rays, std::span<Answer> answers,
         });
       else
         run_parallel(n, threads, [&](size_t begin, size_t end) {
-          kernel(structure, rays.subspan(first + begin, end - begin), out.subspan(begin, end - begin));
+          given(structure, rays.subspan(first + begin, end - begin), out.subspan(begin, end - begin));
         });
     }
   });
@@ -282,13 +284,13 @@ void trace_batch(std::span<const Ray> rays, std::span<Answer> answers,
 
 void Accel::intersect(std::span<const Ray> rays, std::span<Hit> hits) const {
   if (rays.size() != hits.size()) throw std::invalid_argument("intersect: rays and hits differ in length");
-  trace_batch(rays, hits, kernels_.intersect, intersect_sorted, kernels_, traced_, order_key_, order_policy_,
+  trace_batch(rays, hits, given_.intersect, intersect_sorted, kernels_, traced_, order_key_, order_policy_,
               info_.threads);
 }
 
 void Accel::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
   if (rays.size() != occluded.size()) throw std::invalid_argument("occluded: rays and answers differ in length");
-  trace_batch(rays, occluded, kernels_.occluded, occluded_sorted, kernels_, traced_, order_key_,
+  trace_batch(rays, occluded, given_.occluded, occluded_sorted, kernels_, traced_, order_key_,
               order_policy_, info_.threads);
 }
 // [ch10-intersect]

@@ -48,6 +48,10 @@ struct AccelConfig {
   /// Whether intersect() and occluded() sort a batch before tracing it (chapter 9): when the
   /// batch is large and incoherent (the default), always, or never. The answers are the same.
   RayOrderPolicy::Mode order = RayOrderPolicy::Mode::automatic;
+  /// Whether a batch traced in the order given goes in packets wherever P consecutive rays share
+  /// an octant (chapter 9; P is 4, 8 or 16 with the ISA), for the configurations that have
+  /// packet kernels. The answers are the same.
+  bool packets = true;
 };
 
 /// What was built, with the configuration resolved to full names.
@@ -110,8 +114,9 @@ class Accel {
   const AccelInfo& info() const { return info_; }
 
   /// The structure with its kernels, for a caller that makes its own batches and threads (the
-  /// renderer): every call traces on the calling thread. Valid while this Accel lives.
-  Tracer tracer() const { return {traced_, kernels_}; }
+  /// renderer): every call traces on the calling thread, in the order given (in packets where
+  /// the rays allow). Valid while this Accel lives.
+  Tracer tracer() const { return {traced_, given_}; }
 
  private:
   /// Sort keys over the scene's box `scene` (both positions for motion), and when a batch is
@@ -122,6 +127,7 @@ class Accel {
   std::shared_ptr<const void> structure_;  ///< the built structure, whatever its type
   const void* traced_ = nullptr;           ///< what the kernels read: the structure or a part of it
   TraceKernels kernels_;                   ///< resolved once, when the structure was built
+  TraceKernels given_;                     ///< for a batch in the order given: packets, or kernels_
   RayOrderKey order_key_{Box3f{}};         ///< sort keys over the scene's box
   RayOrderPolicy order_policy_;            ///< when a batch is sorted
 };

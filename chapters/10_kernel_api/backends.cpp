@@ -7,6 +7,7 @@
 #include "05_spatial/build_spatial.h"
 #include "06_layouts/layout_build.h"
 #include "07_intersectors/layout_intersectors.h"
+#include "09_inflight/packets.h"
 
 namespace rtk::api {
 
@@ -30,13 +31,16 @@ BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, int threa
 // [ch10-build-rows]
 // BVH2, BVH4 and BVH8: chapter 6's layout BVH (chapter 2's binary node for BVH2, chapter 3's
 // wide node for the others), from a tree built with the SAH options that fill the layout's
-// blocks, traced by the kernels chapter 7 resolves for the width, layout and intersector.
+// blocks, traced by the kernels chapter 7 resolves for the width, layout and intersector, and
+// in packets by chapter 9's kernels where it has them (BVH4 and BVH8).
 template <int N, bool Spatial>
 BuiltStructure build_layout(const TriangleMesh& mesh, Isa isa, int threads, TriangleConfig tri) {
   const BuildTree<N> tree = build_tree<N, Spatial>(mesh, sah_options_for(tri.layout), threads);
-  return bind(make_layout_bvh<N>(tree, mesh, tri.layout, threads),
-              RTK_PICK_ISA(isa, intersector_kernels<N>)(tri),
-              [](const LayoutBVH<N>& bvh) { return &bvh.bvh; });
+  BuiltStructure built = bind(make_layout_bvh<N>(tree, mesh, tri.layout, threads),
+                              RTK_PICK_ISA(isa, intersector_kernels<N>)(tri),
+                              [](const LayoutBVH<N>& bvh) { return &bvh.bvh; });
+  if constexpr (N == 4 || N == 8) built.packets = RTK_PICK_ISA(isa, packet_kernels<N>)(tri);
+  return built;
 }
 // [ch10-build-rows]
 

@@ -16,12 +16,14 @@ namespace rtk::api {
 
 // [ch10-built]
 /// A built structure and the kernels resolved for it: the owner of the structure (of whatever
-/// type), the part the kernels read, the two kernels, and the memory it holds.
+/// type), the part the kernels read, the two kernels, the memory it holds, and the packet
+/// kernels (chapter 9) where the configuration has them.
 struct BuiltStructure {
   std::shared_ptr<const void> owner;
   const void* traced = nullptr;
   TraceKernels kernels;
   size_t bytes = 0;
+  TraceKernels packets;  ///< null where the configuration has none
 };
 
 /// Moves a built structure into shared ownership and binds it to `kernels`. `traced` picks the

@@ -87,7 +87,7 @@ Accel::Accel(const TriangleMesh& t0, const TriangleMesh& t1, const AccelConfig& 
   info_.bytes = built.bytes;
   structure_ = std::move(built.owner);
   traced_ = built.traced;
-  kernels_ = built.kernels;
+  kernels_ = given_ = built.kernels;
   choose_order(merge(t0.bounds(), t1.bounds()), config.order);
 }
 

@@ -1,0 +1,229 @@
+/// \file
+/// Rays in packets: P rays of a batch (P the ISA's float width) traverse a BVH together, one
+/// ray per SIMD lane, each node and leaf read once for all of them. Where the rays go the same
+/// way (camera rays, shadow rays toward one light from neighbouring points) the packet does the
+/// work of P single-ray traversals in the time of about one. Every lane computes what chapter 3's
+/// traversal and chapter 2's Möller-Trumbore test compute for its ray, in the same operations,
+/// and keeps the closest hit by the same order-free rule, so the answers are the single-ray
+/// answers bit for bit. Per-ISA template: include from kernel sources only.
+#pragma once
+
+#ifndef RTK_ISA
+#error "packet_traverser.h belongs to kernel sources compiled once per ISA"
+#endif
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+#include "01_base/platform.h"
+#include "01_base/simd.h"
+#include "02_bvh2/leaf_intersector.h"
+#include "02_bvh2/moeller.h"
+#include "03_bvh4/bvhn_traverser.h"
+#include "06_layouts/triangle_m.h"
+
+namespace rtk::RTK_ISA {
+
+/// Rays per packet: one per lane of the widest float register.
+inline constexpr int kPacketWidth = kNativeWidth;
+
+/// The octant of a direction (its three sign bits), which fixes the near and far planes of
+/// every box for the ray.
+RTK_INLINE uint32_t octant_of(const Vec3f& dir) {
+  return uint32_t(std::signbit(dir.x)) | uint32_t(std::signbit(dir.y)) << 1 | uint32_t(std::signbit(dir.z)) << 2;
+}
+
+// [ch09-packet-ray]
+/// P rays as the box and triangle tests see them, one per lane. Every lane holds exactly the
+/// values chapter 3's BvhNRay and chapter 2's Precalc hold for its ray; the rays share their
+/// octant, so the near and far rows of a node are the same for all. A lane without a ray (past
+/// the batch's end, or an invalid ray) is dead from the start: its interval is empty.
+template <int P>
+struct RayPacket {
+  MoellerTrumbore::Precalc<P> pre;  ///< origins, directions and tnear as the test reads them
+  vfloat<P> neg_rdir_x, neg_rdir_y, neg_rdir_z;
+  vfloat<P> box_tnear;  ///< tnear clamped to finite, as BvhNRay has it
+  vfloat<P> tfar;       ///< the closest hit so far (the ray's tfar before any)
+  vfloat<P> box_tfar;   ///< tfar widened and kept finite (conservative_tfar)
+  uint32_t live = 0;    ///< lanes still looking (occlusion: not yet blocked)
+  size_t near_x, near_y, near_z, far_x, far_y, far_z;
+
+  explicit RayPacket(const Ray& first) : pre(first) {}
+};
+
+/// Loads `count` rays (at most P, all valid, all of octant `octant`) into a packet.
+template <int P, int N>
+RTK_INLINE RayPacket<P> make_packet(const Ray* rays, int count, uint32_t octant) {
+  constexpr float kInf = std::numeric_limits<float>::infinity(), kMax = std::numeric_limits<float>::max();
+  alignas(64) float ox[P], oy[P], oz[P], dx[P], dy[P], dz[P], nx[P], ny[P], nz[P], tn[P], btn[P], tf[P], btf[P];
+  for (int i = 0; i < P; ++i) {
+    const Ray& ray = rays[i < count ? i : 0];
+    ox[i] = ray.org.x, oy[i] = ray.org.y, oz[i] = ray.org.z;
+    dx[i] = ray.dir.x, dy[i] = ray.dir.y, dz[i] = ray.dir.z;
+    // The same divisions and clamps as make_bvhn_ray and conservative_tfar.
+    nx[i] = -(1.0f / ray.dir.x), ny[i] = -(1.0f / ray.dir.y), nz[i] = -(1.0f / ray.dir.z);
+    const bool live = i < count;
+    tn[i] = live ? ray.tnear : kInf;
+    btn[i] = live ? (ray.tnear > -kMax ? ray.tnear : -kMax) : kInf;
+    tf[i] = live ? ray.tfar : -kInf;
+    btf[i] = live ? conservative_tfar(ray.tfar, true) : -kMax;
+  }
+  RayPacket<P> p(rays[0]);
+  p.pre.org = Vec3v<P>(vfloat<P>::load(ox), vfloat<P>::load(oy), vfloat<P>::load(oz));
+  p.pre.dir = Vec3v<P>(vfloat<P>::load(dx), vfloat<P>::load(dy), vfloat<P>::load(dz));
+  p.pre.tnear = vfloat<P>::load(tn);
+  p.neg_rdir_x = vfloat<P>::load(nx), p.neg_rdir_y = vfloat<P>::load(ny), p.neg_rdir_z = vfloat<P>::load(nz);
+  p.box_tnear = vfloat<P>::load(btn);
+  p.tfar = vfloat<P>::load(tf);
+  p.box_tfar = vfloat<P>::load(btf);
+  p.live = count >= 32 ? ~0u : (1u << count) - 1;
+  // Chapter 3's rows: N floats each, the two rows of an axis adjacent, lower first.
+  constexpr size_t kRow = sizeof(float) * N;
+  auto near_row = [](int axis, bool negative) { return size_t(2 * axis) * kRow + (negative ? kRow : 0); };
+  p.near_x = near_row(0, octant & 1), p.near_y = near_row(1, octant & 2), p.near_z = near_row(2, octant & 4);
+  p.far_x = p.near_x ^ kRow, p.far_y = p.near_y ^ kRow, p.far_z = p.near_z ^ kRow;
+  return p;
+}
+// [ch09-packet-ray]
+
+// [ch09-packet-node]
+/// Tests the packet against child `c` of a node: the lanes that enter its box (in the mask),
+/// with chapter 3's intersect_node arithmetic lane for lane, and each lane's entry distance in
+/// `entry` (+inf for the lanes that miss).
+template <int P, int N>
+RTK_INLINE uint32_t enter_child(const NodeN<N>& node, int c, const RayPacket<P>& p, vfloat<P>& entry) {
+  const char* base = reinterpret_cast<const char*>(&node) + sizeof(float) * size_t(c);
+  auto plane = [base](size_t row) { return vfloat<P>(*reinterpret_cast<const float*>(base + row)); };
+  const vfloat<P>& ox = p.pre.org.x;
+  const vfloat<P>& oy = p.pre.org.y;
+  const vfloat<P>& oz = p.pre.org.z;
+  const vfloat<P> nx = (ox - plane(p.near_x)) * p.neg_rdir_x;
+  const vfloat<P> ny = (oy - plane(p.near_y)) * p.neg_rdir_y;
+  const vfloat<P> nz = (oz - plane(p.near_z)) * p.neg_rdir_z;
+  const vfloat<P> fx = (ox - plane(p.far_x)) * p.neg_rdir_x;
+  const vfloat<P> fy = (oy - plane(p.far_y)) * p.neg_rdir_y;
+  const vfloat<P> fz = (oz - plane(p.far_z)) * p.neg_rdir_z;
+  const vfloat<P> dist = max(max(nx, ny), max(nz, p.box_tnear));
+  const vfloat<P> exit = min(widen_exit(min(min(fx, fy), fz)), p.box_tfar);
+  const vbool<P> in = dist <= exit;
+  entry = select(in, dist, vfloat<P>(std::numeric_limits<float>::infinity()));
+  return movemask(in) & p.live;
+}
+// [ch09-packet-node]
+
+// [ch09-packet-leaf]
+/// Tests the packet against the triangles of `count` blocks of M precomputed triangles, one
+/// triangle at a time broadcast to all lanes: Möller-Trumbore with the rays in the lanes. A lane's
+/// closest hit is kept by chapter 2's rule (smaller t, then lower primID), which does not
+/// depend on the order the triangles come in, so a lane ends with its single-ray hit.
+/// Occlusion: lanes hit are blocked and leave the packet. Returns whether any lane changed.
+template <int P, int M, bool kOcclusion>
+RTK_INLINE bool packet_leaf(RayPacket<P>& p, const TriangleM<M>* blocks, uint32_t count, Hit* hits, uint8_t* blocked) {
+  bool changed = false;
+  for (uint32_t b = 0; b < count; ++b) {
+    const TriangleM<M>& t = blocks[b];
+    for (int j = 0; j < M; ++j) {
+      if (j > 0 && t.prim[j] == t.prim[0]) break;  // unused lanes repeat lane 0
+      auto lane = [&](const float (&row)[3][M]) {
+        return Vec3v<P>(vfloat<P>(row[0][j]), vfloat<P>(row[1][j]), vfloat<P>(row[2][j]));
+      };
+      TriangleHitsK<P> h{};
+      const vbool<P> valid = MoellerTrumbore::intersect<P>(p.pre, p.tfar, lane(t.v0), lane(t.e1), lane(t.e2), lane(t.Ng), h);
+      uint32_t mask = movemask(valid) & p.live;
+      if (mask == 0) continue;
+      if constexpr (kOcclusion) {
+        for (const int i : set_bits(mask)) blocked[i] = 1;
+        p.live &= ~mask;
+        changed = true;
+        if (p.live == 0) return true;
+      } else {
+        alignas(64) float ts[P], us[P], vs[P];
+        h.t.store(ts), h.u.store(us), h.v.store(vs);
+        const uint32_t prim = t.prim[j];
+        for (const int i : set_bits(mask)) {
+          Hit& hit = hits[i];
+          if (hit.found() && (ts[i] > hit.t || (ts[i] == hit.t && prim > hit.prim))) continue;
+          hit = Hit{ts[i], us[i], vs[i], prim};
+          changed = true;
+        }
+      }
+    }
+  }
+  return changed;
+}
+// [ch09-packet-leaf]
+
+/// After hits: each lane's interval ends at its closest hit, widened for the box tests.
+template <int P>
+RTK_INLINE void shorten_packet(RayPacket<P>& p, const Hit* hits) {
+  alignas(64) float tf[P], btf[P];
+  p.tfar.store(tf), p.box_tfar.store(btf);
+  for (int i = 0; i < P; ++i)
+    if (hits[i].found()) tf[i] = hits[i].t, btf[i] = conservative_tfar(hits[i].t, true);
+  p.tfar = vfloat<P>::load(tf), p.box_tfar = vfloat<P>::load(btf);
+}
+
+// [ch09-packet-traverse]
+/// Traces one packet through a BVHN whose leaves are blocks of M precomputed triangles. The
+/// packet visits a node when any live lane enters it. The children entered are pushed farthest
+/// first (as the first lane that enters each sees them), each with every lane's entry distance,
+/// and an entry popped is skipped unless some lane enters it before its own closest hit: per
+/// lane, chapter 3's cull at pop. A lane sees every leaf its single ray would see (and perhaps
+/// more, which only costs time).
+template <int P, int N, int M, bool kOcclusion>
+void trace_packet(const BVHN<N>& bvh, RayPacket<P>& p, Hit* hits, uint8_t* blocked) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const std::byte* leaf_bytes = bvh.leaves.bytes.data();
+  NodeRef refs[kBvhStackSize<N>];
+  vfloat<P> entries[kOcclusion ? 1 : kBvhStackSize<N>];  // occlusion culls nothing
+  int top = 0;
+  refs[top] = bvh.root;
+  if constexpr (!kOcclusion) entries[top] = vfloat<P>(-kInf);
+  ++top;
+  while (top > 0) {
+    const NodeRef ref = refs[--top];
+    if constexpr (!kOcclusion)
+      if ((movemask(entries[top] <= p.box_tfar) & p.live) == 0) continue;
+    if (!is_leaf(ref)) {
+      const NodeN<N>& node = bvh.node(ref);
+      // The children entered, sorted so that the nearest is pushed last.
+      vfloat<P> entry[N];
+      float key[N];
+      int order[N];
+      int k = 0;
+      for (int c = 0; c < N; ++c) {
+        const uint32_t mask = enter_child<P, N>(node, c, p, entry[c]);
+        if (mask == 0) continue;
+        alignas(64) float lanes[P];
+        entry[c].store(lanes);
+        key[c] = lanes[std::countr_zero(mask)];
+        int at = k++;
+        for (; at > 0 && key[order[at - 1]] < key[c]; --at) order[at] = order[at - 1];
+        order[at] = c;
+      }
+      for (int i = 0; i < k; ++i) {
+        refs[top] = node.children[order[i]];
+        if constexpr (!kOcclusion) entries[top] = entry[order[i]];
+        ++top;
+      }
+      continue;
+    }
+    const uint32_t count = leaf_blocks(ref);
+    if (count == 0) continue;
+    const auto* blocks = reinterpret_cast<const TriangleM<M>*>(leaf_bytes + leaf_offset(ref));
+    if (packet_leaf<P, M, kOcclusion>(p, blocks, count, hits, blocked)) {
+      if constexpr (kOcclusion) {
+        if (p.live == 0) return;
+      } else {
+        shorten_packet(p, hits);
+      }
+    }
+  }
+}
+// [ch09-packet-traverse]
+
+}  // namespace rtk::RTK_ISA
