@@ -261,10 +261,11 @@ struct StatsCounter<true> {
   RTK_INLINE void cull() { ++s.culled; }
 };
 
-/// Traces one valid ray through an N-wide BVH. For a closest hit (kOcclusion false) it returns
-/// whether a hit was found and writes it to `hit`; for occlusion, whether anything blocks.
+/// Traces one valid ray through the subtree of `from` (bvh.root for the whole BVH) of an N-wide
+/// BVH. For a closest hit (kOcclusion false) it returns whether it found a hit that beats `hit`
+/// (chapter 2's rule) and writes it there; for occlusion, whether anything blocks.
 template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats>
-bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kStats>& stats) {
+bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit, StatsCounter<kStats>& stats) {
   const typename Leaf::Precalc pre(ray);
   constexpr bool kWiden = T.conservative_exits;
   BvhNRay<N> r = make_bvhn_ray<N>(ray, kWiden);
@@ -280,7 +281,7 @@ bool traverse_bvhn(const BVHN<N>& bvh, const Ray& ray, Hit& hit, StatsCounter<kS
   const std::byte* leaf_bytes = bvh.leaves.bytes.data();
   bool found = false;
 
-  NodeRef cur = bvh.root;
+  NodeRef cur = from;
   for (;;) {
     // [ch03-descend]
     while (!is_leaf(cur)) {
@@ -351,7 +352,7 @@ void intersect_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<Hit
     Hit hit;
     if (is_valid(rays[i])) {
       if constexpr (kStats) ++counter.s.rays;
-      traverse_bvhn<N, Leaf, T, false, kStats>(bvh, rays[i], hit, counter);
+      traverse_bvhn<N, Leaf, T, false, kStats>(bvh, bvh.root, rays[i], hit, counter);
     }
     hits[i] = hit;
   }
@@ -368,7 +369,7 @@ void occluded_rays(const BVHN<N>& bvh, std::span<const Ray> rays, std::span<uint
     bool blocked = false;
     if (is_valid(rays[i])) {
       if constexpr (kStats) ++counter.s.rays;
-      blocked = traverse_bvhn<N, Leaf, T, true, kStats>(bvh, rays[i], unused, counter);
+      blocked = traverse_bvhn<N, Leaf, T, true, kStats>(bvh, bvh.root, rays[i], unused, counter);
     }
     occluded[i] = blocked ? 1 : 0;
   }

@@ -9,7 +9,8 @@
 // single-ray kernel / time in flight (above 1: rays in flight are faster), in the thread's CPU
 // time, so that the ratio survives a shared machine. order/SCENE/KIND alternates the
 // single-ray kernel on a batch of 2^18 rays as given and the same kernel on the batch sorted
-// (the sort included), and reports speedup = given / sorted.
+// (the sort included), and reports speedup = given / sorted. packets/SCENE/KIND/ISA alternates
+// the single-ray kernel and the packet kernel of an ISA, speedup = single / packets.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -23,6 +24,7 @@
 #include "06_layouts/layout_build.h"
 #include "07_intersectors/layout_intersectors.h"
 #include "09_inflight/inflight.h"
+#include "09_inflight/packets.h"
 #include "09_inflight/ray_order.h"
 #include "io/obj_loader.h"
 #include "replay/ray_generator.h"
@@ -65,12 +67,12 @@ double thread_seconds() {
 }
 
 // [ch09-bench]
-void bm_inflight(benchmark::State& state, Scene* scene, RayKind kind, Isa isa, InflightConfig config) {
-  Scene& s = prepare(*scene, kind);
+/// Alternates, on the same rays and tree, the single-ray kernels and `other`, timing each in the
+/// thread's CPU time, and reports speedup = time of the single-ray kernels / time of `other`.
+void alternate(benchmark::State& state, Scene& s, RayKind kind, const TraceKernels& single,
+               const TraceKernels& other) {
   const std::vector<Ray>& rays = s.rays[kind];
   const bool occlusion = kind == RayKind::shadow;
-  const TraceKernels single = RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri);
-  const TraceKernels inflight = RTK_PICK_ISA(isa, inflight_kernels<8>)(kTri, config);
   std::vector<Hit> hits(rays.size());
   std::vector<uint8_t> occ(rays.size());
   auto run = [&](const TraceKernels& k) {
@@ -79,24 +81,39 @@ void bm_inflight(benchmark::State& state, Scene* scene, RayKind kind, Isa isa, I
     benchmark::DoNotOptimize(hits.data());
     benchmark::DoNotOptimize(occ.data());
   };
-  double single_seconds = 0, inflight_seconds = 0;
+  double single_seconds = 0, other_seconds = 0;
   for (auto _ : state) {
     const double t0 = thread_seconds();
     run(single);
     const double t1 = thread_seconds();
-    run(inflight);
+    run(other);
     const double t2 = thread_seconds();
     single_seconds += t1 - t0;
-    inflight_seconds += t2 - t1;
+    other_seconds += t2 - t1;
     state.SetIterationTime(t2 - t1);
   }
   const double n = double(state.iterations()) * double(rays.size());
-  state.counters["mrays_per_s"] = n / inflight_seconds * 1e-6;
+  state.counters["mrays_per_s"] = n / other_seconds * 1e-6;
   state.counters["single_mrays_per_s"] = n / single_seconds * 1e-6;
-  state.counters["speedup"] = single_seconds / inflight_seconds;
+  state.counters["speedup"] = single_seconds / other_seconds;
   state.counters["triangles"] = double(s.mesh.size());
   state.counters["tree_mb"] = double(s.bvh->bytes()) * 1e-6;
 }
+
+void bm_inflight(benchmark::State& state, Scene* scene, RayKind kind, Isa isa, InflightConfig config) {
+  Scene& s = prepare(*scene, kind);
+  alternate(state, s, kind, RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri),
+            RTK_PICK_ISA(isa, inflight_kernels<8>)(kTri, config));
+}
+// [ch09-bench]
+
+// [ch09-packets-bench]
+void bm_packets(benchmark::State& state, Scene* scene, RayKind kind, Isa isa) {
+  Scene& s = prepare(*scene, kind);
+  alternate(state, s, kind, RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri),
+            RTK_PICK_ISA(isa, packet_kernels<8>)(kTri));
+}
+// [ch09-packets-bench]
 // [ch09-bench]
 
 // [ch09-order-bench]
@@ -175,6 +192,12 @@ std::vector<std::unique_ptr<Scene>> scenes;
                                      isa, kDefaultInflight)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
+      for (Isa isa : supported_isas())
+        if (has_packets(isa, kTri))
+          benchmark::RegisterBenchmark(("packets/" + prefix + std::string(isa_name(isa))).c_str(), bm_packets, s,
+                                       kind, isa)
+              ->UseManualTime()
+              ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("order/" + s->name + "/" + std::string(ray_kind_name(kind))).c_str(), bm_order,
                                    s, kind)
           ->UseManualTime()

@@ -34,10 +34,9 @@ void trace_in_packets(const void* structure, std::span<const Ray> rays, std::spa
     int count = 0;
     uint32_t octants = 0;  // the octants seen, one bit each
     for (size_t i = first; i < first + n; ++i) {
-      if (!is_valid(rays[i])) continue;
-      octants |= 1u << octant_of(rays[i].dir);
-      lanes[count] = rays[i];
-      index[count++] = uint32_t(i);
+      const bool valid = is_valid(rays[i]);
+      octants |= valid ? 1u << octant_of(rays[i].dir) : 0u;
+      count += valid;
     }
     const std::span<const Ray> group = rays.subspan(first, n);
     const std::span<Answer> out = answers.subspan(first, n);
@@ -46,11 +45,14 @@ void trace_in_packets(const void* structure, std::span<const Ray> rays, std::spa
       else intersect_rays<N, Leaf, Tricks{}, false>(bvh, group, out, nullptr);
       continue;
     }
+    count = 0;
+    for (size_t i = first; i < first + n; ++i)
+      if (is_valid(rays[i])) lanes[count] = rays[i], index[count++] = uint32_t(i);
     for (Answer& a : out) a = Answer{};  // invalid rays miss
     RayPacket<P> packet = make_packet<P, N>(lanes, count, uint32_t(std::countr_zero(octants)));
     Hit hits[P];
     uint8_t blocked[P] = {};
-    trace_packet<P, N, M, kOcclusion>(bvh, packet, hits, blocked);
+    trace_packet<P, N, M, kOcclusion>(bvh, lanes, packet, hits, blocked);
     for (int k = 0; k < count; ++k) {
       if constexpr (kOcclusion) answers[index[k]] = blocked[k];
       else answers[index[k]] = hits[k];

@@ -30,6 +30,10 @@ namespace rtk::RTK_ISA {
 
 /// Rays per packet: one per lane of the widest float register.
 inline constexpr int kPacketWidth = kNativeWidth;
+/// A subtree that at most this many lanes enter is left to them one ray at a time: a packet's
+/// box test costs N tests of P lanes, a ray's one test of N children (chapter 9 measures the
+/// choice: a quarter of the packet on the real meshes).
+inline constexpr int kAloneLanes = kPacketWidth / 4;
 
 /// The octant of a direction (its three sign bits), which fixes the near and far planes of
 /// every box for the ray.
@@ -175,7 +179,28 @@ RTK_INLINE void shorten_packet(RayPacket<P>& p, const Hit* hits) {
 /// lane, chapter 3's cull at pop. A lane sees every leaf its single ray would see (and perhaps
 /// more, which only costs time).
 template <int P, int N, int M, bool kOcclusion>
-void trace_packet(const BVHN<N>& bvh, RayPacket<P>& p, Hit* hits, uint8_t* blocked) {
+void trace_packet(const BVHN<N>& bvh, const Ray* rays, RayPacket<P>& p, Hit* hits, uint8_t* blocked) {
+  using Leaf = LeafIntersector<TriangleMLayout<M>, MoellerTrumbore, true>;
+  StatsCounter<false> no_stats;
+  // Lanes that enter a subtree few enough to go alone: each ray through it with chapter 3's
+  // traversal, from its closest hit so far, and the subtree is not pushed for the packet.
+  auto alone = [&](NodeRef child, uint32_t mask) {
+    bool changed = false;
+    for (const int i : set_bits(mask)) {
+      Ray ray = rays[i];
+      if constexpr (kOcclusion) {
+        if (traverse_bvhn<N, Leaf, Tricks{}, true, false>(bvh, child, ray, hits[i], no_stats)) {
+          blocked[i] = 1;
+          p.live &= ~(1u << i);
+          changed = true;
+        }
+      } else {
+        if (hits[i].found()) ray.tfar = hits[i].t;
+        changed |= traverse_bvhn<N, Leaf, Tricks{}, false, false>(bvh, child, ray, hits[i], no_stats);
+      }
+    }
+    if (changed && !kOcclusion) shorten_packet(p, hits);
+  };
   constexpr float kInf = std::numeric_limits<float>::infinity();
   const std::byte* leaf_bytes = bvh.leaves.bytes.data();
   NodeRef refs[kBvhStackSize<N>];
@@ -186,8 +211,11 @@ void trace_packet(const BVHN<N>& bvh, RayPacket<P>& p, Hit* hits, uint8_t* block
   ++top;
   while (top > 0) {
     const NodeRef ref = refs[--top];
-    if constexpr (!kOcclusion)
-      if ((movemask(entries[top] <= p.box_tfar) & p.live) == 0) continue;
+    uint32_t entering = p.live;
+    if constexpr (!kOcclusion) {
+      entering &= movemask(entries[top] <= p.box_tfar);
+      if (entering == 0) continue;
+    }
     if (!is_leaf(ref)) {
       const NodeN<N>& node = bvh.node(ref);
       // The children entered, sorted so that the nearest is pushed last.
@@ -196,8 +224,15 @@ void trace_packet(const BVHN<N>& bvh, RayPacket<P>& p, Hit* hits, uint8_t* block
       int order[N];
       int k = 0;
       for (int c = 0; c < N; ++c) {
+        // An unused slot (or an empty leaf) holds nothing: no box test.
+        if (node.children[c] == kEmptyLeaf) continue;
         const uint32_t mask = enter_child<P, N>(node, c, p, entry[c]);
         if (mask == 0) continue;
+        if (std::popcount(mask) <= kAloneLanes) {
+          alone(node.children[c], mask);
+          if (kOcclusion && p.live == 0) return;
+          continue;
+        }
         alignas(64) float lanes[P];
         entry[c].store(lanes);
         key[c] = lanes[std::countr_zero(mask)];
@@ -215,6 +250,18 @@ void trace_packet(const BVHN<N>& bvh, RayPacket<P>& p, Hit* hits, uint8_t* block
     const uint32_t count = leaf_blocks(ref);
     if (count == 0) continue;
     const auto* blocks = reinterpret_cast<const TriangleM<M>*>(leaf_bytes + leaf_offset(ref));
+    // A leaf that at most M lanes enter: each tests the block's M triangles at once, as a single
+    // ray does, which costs no more than the packet testing the M triangles one by one.
+    if (!kOcclusion && std::popcount(entering) <= M) {
+      bool changed = false;
+      for (const int i : set_bits(entering)) {
+        const typename Leaf::Precalc pre(rays[i]);
+        float tfar = hits[i].found() ? hits[i].t : rays[i].tfar;
+        changed |= Leaf::intersect(pre, rays[i], blocks, count, hits[i], tfar);
+      }
+      if (changed) shorten_packet(p, hits);
+      continue;
+    }
     if (packet_leaf<P, M, kOcclusion>(p, blocks, count, hits, blocked)) {
       if constexpr (kOcclusion) {
         if (p.live == 0) return;
