@@ -17,39 +17,42 @@ namespace rtk::RTK_ISA {
 namespace {
 
 // [ch09-packet-batch]
-/// Traces a batch P rays at a time: the valid rays of each group of P consecutive ones form a
-/// packet when there are at least two and they share an octant; otherwise the group is traced
-/// one ray at a time by chapter 3's kernel with the same leaves, whose answers the packet's
-/// equal. Invalid rays miss, as everywhere.
+/// Traces a batch P rays at a time: a group of P consecutive rays of one octant forms a packet
+/// of its valid rays when there are at least two; the other groups are traced
+/// one ray at a time by chapter 3's kernel with the same leaves (a run of them in one call),
+/// whose answers the packet's equal. Invalid rays miss, as everywhere.
 template <int N, int M, bool kOcclusion, class Answer>
 void trace_in_packets(const void* structure, std::span<const Ray> rays, std::span<Answer> answers) {
   require_same_size(rays.size(), answers.size());
   using Leaf = LeafIntersector<TriangleMLayout<M>, MoellerTrumbore, true>;
   constexpr int P = kPacketWidth;
   const auto& bvh = *static_cast<const BVHN<N>*>(structure);
+  // Rays [single, first) wait to be traced one at a time, in one call.
+  size_t single = 0;
+  auto flush = [&](size_t end) {
+    const std::span<const Ray> run = rays.subspan(single, end - single);
+    const std::span<Answer> out = answers.subspan(single, end - single);
+    if constexpr (kOcclusion) occluded_rays<N, Leaf, Tricks{}, false>(bvh, run, out, nullptr);
+    else intersect_rays<N, Leaf, Tricks{}, false>(bvh, run, out, nullptr);
+  };
   for (size_t first = 0; first < rays.size(); first += P) {
     const size_t n = std::min<size_t>(P, rays.size() - first);
+    // One octant for all (incoherent rays differ within two or three, and the test stops
+    // there), then at least two valid rays; anything else joins the single rays.
+    const uint32_t octant = octant_of(rays[first].dir);
+    size_t same = first + 1;
+    while (same < first + n && octant_of(rays[same].dir) == octant) ++same;
+    if (same < first + n) continue;
     Ray lanes[P];
     uint32_t index[P];
     int count = 0;
-    uint32_t octants = 0;  // the octants seen, one bit each
-    for (size_t i = first; i < first + n; ++i) {
-      const bool valid = is_valid(rays[i]);
-      octants |= valid ? 1u << octant_of(rays[i].dir) : 0u;
-      count += valid;
-    }
-    const std::span<const Ray> group = rays.subspan(first, n);
-    const std::span<Answer> out = answers.subspan(first, n);
-    if (count < 2 || (octants & (octants - 1)) != 0) {
-      if constexpr (kOcclusion) occluded_rays<N, Leaf, Tricks{}, false>(bvh, group, out, nullptr);
-      else intersect_rays<N, Leaf, Tricks{}, false>(bvh, group, out, nullptr);
-      continue;
-    }
-    count = 0;
     for (size_t i = first; i < first + n; ++i)
       if (is_valid(rays[i])) lanes[count] = rays[i], index[count++] = uint32_t(i);
-    for (Answer& a : out) a = Answer{};  // invalid rays miss
-    RayPacket<P> packet = make_packet<P, N>(lanes, count, uint32_t(std::countr_zero(octants)));
+    if (count < 2) continue;
+    flush(first);
+    single = first + n;
+    for (size_t i = first; i < first + n; ++i) answers[i] = Answer{};  // invalid rays miss
+    RayPacket<P> packet = make_packet<P, N>(lanes, count, octant);
     Hit hits[P];
     uint8_t blocked[P] = {};
     trace_packet<P, N, M, kOcclusion>(bvh, lanes, packet, hits, blocked);
@@ -58,6 +61,7 @@ void trace_in_packets(const void* structure, std::span<const Ray> rays, std::spa
       else answers[index[k]] = hits[k];
     }
   }
+  flush(rays.size());
 }
 // [ch09-packet-batch]
 

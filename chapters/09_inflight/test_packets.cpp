@@ -55,20 +55,19 @@ std::vector<RaySet> ray_sets(const test::LayoutScene& scene) {
   return sets;
 }
 
-/// Groups of P consecutive rays whose valid rays (two or more) share an octant: those the
-/// kernels trace as packets.
+/// Groups of P consecutive rays of one octant with two valid rays or more: those the kernels
+/// trace as packets.
 size_t packet_groups(std::span<const Ray> rays, int p) {
+  auto octant = [](const Ray& r) { return std::signbit(r.dir.x) | std::signbit(r.dir.y) << 1 | std::signbit(r.dir.z) << 2; };
   size_t groups = 0;
   for (size_t first = 0; first < rays.size(); first += size_t(p)) {
     int valid = 0;
-    uint32_t octants = 0;
-    for (size_t i = first; i < std::min(rays.size(), first + size_t(p)); ++i)
-      if (is_valid(rays[i])) {
-        ++valid;
-        const Vec3f& d = rays[i].dir;
-        octants |= 1u << (std::signbit(d.x) | std::signbit(d.y) << 1 | std::signbit(d.z) << 2);
-      }
-    groups += valid >= 2 && (octants & (octants - 1)) == 0;
+    bool one_octant = true;
+    for (size_t i = first; i < std::min(rays.size(), first + size_t(p)); ++i) {
+      valid += is_valid(rays[i]);
+      one_octant = one_octant && octant(rays[i]) == octant(rays[first]);
+    }
+    groups += valid >= 2 && one_octant;
   }
   return groups;
 }
