@@ -279,6 +279,15 @@ section_ch09_order() { # rays in order: a batch sorted by octant and origin cell
     python3 chapters/09_inflight/bench_tables.py order "$OUT/ch09_order.json"
 }
 
+section_ch09_packets() { # rays in packets: the packet kernels against the single-ray ones, per ISA (real meshes)
+  have_scenes || return 0
+  build ch09_bench
+  RTK_SCENES=$SCENES gbench ch09_packets "$B/chapters/09_inflight/ch09_bench" --benchmark_filter='^packets/' \
+    --benchmark_min_time=0.2 --benchmark_counters_tabular=true
+  table ch09_packets chapters/09_inflight/ch09_packets.md \
+    python3 chapters/09_inflight/bench_tables.py packets "$OUT/ch09_packets.json"
+}
+
 section_ch11() { # sampling: the sample patterns figure; the samplers' speed
   build ch11_figure ch11_bench
   "$B/chapters/11_sampling/ch11_figure" chapters/11_sampling/ch11_points.png
@@ -396,7 +405,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure. ch14_path_loop is run
 # only when named: it builds the path loop of an earlier commit to compare with.
-SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch11 ch12 ch13 ch14 ch15 ch16 embree)
+SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
        ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop)
 

@@ -9,8 +9,9 @@
 // single-ray kernel / time in flight (above 1: rays in flight are faster), in the thread's CPU
 // time, so that the ratio survives a shared machine. order/SCENE/KIND alternates the
 // single-ray kernel on a batch of 2^18 rays as given and the same kernel on the batch sorted
-// (the sort included), and reports speedup = given / sorted. packets/SCENE/KIND/ISA alternates
-// the single-ray kernel and the packet kernel of an ISA, speedup = single / packets.
+// (the sort included), and reports speedup = given / sorted. packets/SCENE/KIND/ISA alternates,
+// on the same 2^18 rays, the single-ray kernel and the packet kernel of an ISA, and reports
+// speedup = single / packets.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -69,9 +70,8 @@ double thread_seconds() {
 // [ch09-bench]
 /// Alternates, on the same rays and tree, the single-ray kernels and `other`, timing each in the
 /// thread's CPU time, and reports speedup = time of the single-ray kernels / time of `other`.
-void alternate(benchmark::State& state, Scene& s, RayKind kind, const TraceKernels& single,
-               const TraceKernels& other) {
-  const std::vector<Ray>& rays = s.rays[kind];
+void alternate(benchmark::State& state, Scene& s, RayKind kind, const std::vector<Ray>& rays,
+               const TraceKernels& single, const TraceKernels& other) {
   const bool occlusion = kind == RayKind::shadow;
   std::vector<Hit> hits(rays.size());
   std::vector<uint8_t> occ(rays.size());
@@ -102,15 +102,19 @@ void alternate(benchmark::State& state, Scene& s, RayKind kind, const TraceKerne
 
 void bm_inflight(benchmark::State& state, Scene* scene, RayKind kind, Isa isa, InflightConfig config) {
   Scene& s = prepare(*scene, kind);
-  alternate(state, s, kind, RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri),
+  alternate(state, s, kind, s.rays[kind], RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri),
             RTK_PICK_ISA(isa, inflight_kernels<8>)(kTri, config));
 }
 // [ch09-bench]
 
 // [ch09-packets-bench]
+/// The batches of the order benchmark (the Embree comparison's size: primary rays of a 512 x 512
+/// image), traced by the single-ray kernel and by the packet kernel of `isa`.
 void bm_packets(benchmark::State& state, Scene* scene, RayKind kind, Isa isa) {
   Scene& s = prepare(*scene, kind);
-  alternate(state, s, kind, RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri),
+  auto& rays = s.order_rays[kind];
+  if (rays.empty()) rays = generate_rays(s.mesh, kind, kOrderRays, 1);
+  alternate(state, s, kind, rays, RTK_PICK_ISA(isa, intersector_kernels<8>)(kTri),
             RTK_PICK_ISA(isa, packet_kernels<8>)(kTri));
 }
 // [ch09-packets-bench]

@@ -6,6 +6,7 @@ the same benchmark (above 1: rays in flight are faster).
   python3 chapters/09_inflight/bench_tables.py ablation ch09.json  # rays in flight x prefetch
   python3 chapters/09_inflight/bench_tables.py isa ch09.json       # the default, on each ISA
   python3 chapters/09_inflight/bench_tables.py order ch09.json     # a batch sorted against as given
+  python3 chapters/09_inflight/bench_tables.py packets ch09.json   # packets against single rays, per ISA
 """
 import math
 import os
@@ -71,6 +72,11 @@ def isa(benchmarks):
           lambda b: f"{int(b['triangles']):,} | {b['tree_mb']:.1f}")
 
 
+def packets(benchmarks):
+    table(collect(benchmarks, "packets"), ["sse4", "avx2", "avx512"], "triangles | tree MB",
+          lambda b: f"{int(b['triangles']):,} | {b['tree_mb']:.1f}")
+
+
 def order(benchmarks):
     """One row per scene, a column per kind of ray: the batch's time as given over its time
     sorted, the sort included, and the sort's share of the sorted time ("as given" where the
@@ -99,6 +105,6 @@ def order(benchmarks):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("ablation", "isa", "order"):
+    if len(sys.argv) != 3 or sys.argv[1] not in ("ablation", "isa", "order", "packets"):
         sys.exit(__doc__)
-    {"ablation": ablation, "isa": isa, "order": order}[sys.argv[1]](runs(sys.argv[2]))
+    {"ablation": ablation, "isa": isa, "order": order, "packets": packets}[sys.argv[1]](runs(sys.argv[2]))

@@ -229,11 +229,12 @@ TEST_CASE("ch10: unsupported configurations are refused with the supported list"
   CHECK(refusal(c) == "");
 }
 
-TEST_CASE("ch10: a batch traced sorted gives the answers of the batch traced as given") {
-  // Chapter 9's order changes when each ray is traced, never its answer: the same bits with the
-  // order always, never and automatic (which traces this small scene's batches as given), on
-  // one and on two threads, for incoherent rays and for rays from one point. The batches are
-  // larger than the policy's minimum and cross a thread's share.
+TEST_CASE("ch10: a batch traced sorted or in packets gives the answers of the batch traced one ray at a time") {
+  // Chapter 9's order and packets change when and with what each ray is traced, never its
+  // answer: the same bits with the order always, never and automatic (which traces this small
+  // scene's batches as given), with packets and without, on one and on two threads, for
+  // incoherent rays and for rays from one point (which form packets). The batches are larger
+  // than the policy's minimum and cross a thread's share.
   const TriangleMesh mesh = mixed_scene();
   std::vector<Ray> incoherent = test::random_rays(mesh.bounds(), 6000, 611);
   const std::vector<Ray> mixed = test::mixed_rays(mesh.bounds(), 400, 612);
@@ -245,12 +246,14 @@ TEST_CASE("ch10: a batch traced sorted gives the answers of the batch traced as 
     std::vector<uint8_t> given_blocked(rays->size());
     AccelConfig config;
     config.order = RayOrderPolicy::Mode::never;
+    config.packets = false;
     const Accel reference(mesh, config);
     reference.intersect(*rays, given);
     reference.occluded(*rays, given_blocked);
-    for (const auto order : {RayOrderPolicy::Mode::always, RayOrderPolicy::Mode::automatic})
+    for (const auto order : {RayOrderPolicy::Mode::always, RayOrderPolicy::Mode::automatic, RayOrderPolicy::Mode::never})
+      for (const bool packets : {true, false})
       for (const int threads : {1, 2}) {
-        config.order = order, config.threads = threads;
+        config.order = order, config.packets = packets, config.threads = threads;
         const Accel accel(mesh, config);
         std::vector<Hit> hits(rays->size());
         std::vector<uint8_t> blocked(rays->size(), 7);

@@ -244,6 +244,7 @@ TEST_CASE("cli: bad command lines fail with status 2 and name the option or file
       {trace + h + " -isa neon", "-isa"},
       {trace + h + " -threads 0", "-threads"},
       {trace + h + " -order random", "-order: 'random' is not auto, sorted or given"},
+      {trace + h + " -packets maybe", "-packets: 'maybe' is not on or off"},
       {trace + h + " -repeat x", "-repeat"},
       {trace + h + " -bogus 1", "unknown option '-bogus'"},
       {trace, "missing option -hits or -occl"},
@@ -388,4 +389,17 @@ TEST_CASE("cli: -order changes when each ray is traced, never the answer") {
     CHECK(rtk::read_file(work("o_" + order + ".hits")) == rtk::read_file(work("o_given.hits")));
     CHECK(rtk::read_file(work("o_" + order + ".occl")) == rtk::read_file(work("o_given.occl")));
   }
+}
+
+TEST_CASE("cli: -packets changes how camera rays are traced, never the answer") {
+  make_rays("primary", work("p.rays"), 5000);  // coherent: packets form
+  const std::string trace = "trace -i " + scene_file() + " -rays " + work("p.rays");
+  for (const std::string packets : {"on", "off"}) {
+    const Result hits = run_rtk(trace + " -packets " + packets + " -hits " + work("p_" + packets + ".hits"));
+    REQUIRE_MESSAGE(hits.status == 0, hits.output);
+    const Result occl = run_rtk(trace + " -packets " + packets + " -occl " + work("p_" + packets + ".occl"));
+    REQUIRE_MESSAGE(occl.status == 0, occl.output);
+  }
+  CHECK(rtk::read_file(work("p_on.hits")) == rtk::read_file(work("p_off.hits")));
+  CHECK(rtk::read_file(work("p_on.occl")) == rtk::read_file(work("p_off.occl")));
 }
