@@ -44,8 +44,9 @@ RTK_INLINE uint32_t octant_of(const Vec3f& dir) {
 // [ch09-packet-ray]
 /// P rays as the box and triangle tests see them, one per lane. Every lane holds exactly the
 /// values chapter 3's BvhNRay and chapter 2's Precalc hold for its ray; the rays share their
-/// octant, so the near and far rows of a node are the same for all. A lane without a ray (past
-/// the batch's end, or an invalid ray) is dead from the start: its interval is empty.
+/// octant, so the near and far rows of a node are the same for all. A lane without a ray (a
+/// group's invalid rays are left out of its packet, so these are the lanes past its count) is
+/// dead from the start: its interval is empty.
 template <int P>
 struct RayPacket {
   MoellerTrumbore::Precalc<P> pre;  ///< origins, directions and tnear as the test reads them
