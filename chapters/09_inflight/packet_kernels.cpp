@@ -18,9 +18,9 @@ namespace {
 
 // [ch09-packet-batch]
 /// Traces a batch P rays at a time: a group of P consecutive rays of one octant forms a packet
-/// of its valid rays when there are at least two; the other groups are traced
-/// one ray at a time by chapter 3's kernel with the same leaves (a run of them in one call),
-/// whose answers the packet's equal. Invalid rays miss, as everywhere.
+/// of its valid rays when there are at least two; the other groups are traced one ray at a time
+/// by chapter 3's kernel with the same leaves (a run of them in one call), whose answers the
+/// packet's equal. Invalid rays miss, as everywhere.
 template <int N, int M, bool kOcclusion, class Answer>
 void trace_in_packets(const void* structure, std::span<const Ray> rays, std::span<Answer> answers) {
   require_same_size(rays.size(), answers.size());
@@ -74,10 +74,14 @@ constexpr TraceKernels packet_batch_kernels() {
 
 template <int N>
 TraceKernels packet_kernels(TriangleConfig tri) {
-  if (kPacketWidth < 4 || tri.intersector != IntersectorKind::moeller) return {};
-  if (tri.layout == TriangleLayout::triangle8) return packet_batch_kernels<N, 8>();
-  if (tri.layout == TriangleLayout::triangle4) return packet_batch_kernels<N, 4>();
-  return {};
+  if constexpr (kPacketWidth < 4) {
+    return {};  // the scalar ISA: a packet of one ray is the single ray
+  } else {
+    if (tri.intersector != IntersectorKind::moeller) return {};
+    if (tri.layout == TriangleLayout::triangle8) return packet_batch_kernels<N, 8>();
+    if (tri.layout == TriangleLayout::triangle4) return packet_batch_kernels<N, 4>();
+    return {};
+  }
 }
 
 template TraceKernels packet_kernels<RTK_WIDTH>(TriangleConfig);
