@@ -50,6 +50,12 @@ RTK_INLINE uint32_t block_prim(const Block& b, int lane) {
 }
 
 // [ch02-closest-rule]
+/// Whether a hit at distance t on triangle `prim` replaces `hit`: a smaller t wins, and at
+/// equal t the lower primID (the same triangle again changes nothing).
+RTK_INLINE bool improves_on(float t, uint32_t prim, const Hit& hit) {
+  return !hit.found() || t < hit.t || (t == hit.t && prim <= hit.prim);
+}
+
 /// The closest of a block's valid lanes, and whether it improves on `hit`: a smaller t wins,
 /// and at equal t the lower primID. The rule decides the same way whatever order the blocks,
 /// lanes and leaves are met in, so every layout, block width, node width and build finds the
@@ -66,7 +72,7 @@ RTK_INLINE bool closest_in_block(vbool<K> valid, const TriangleHitsK<K>& h, cons
     const uint32_t p = block_prim(block, other);
     if (p < prim) lane = other, prim = p;
   }
-  if (hit.found() && (nearest > hit.t || (nearest == hit.t && prim > hit.prim))) return false;
+  if (!improves_on(nearest, prim, hit)) return false;
   hit = Hit{nearest, h.u[lane], h.v[lane], prim};
   return true;
 }

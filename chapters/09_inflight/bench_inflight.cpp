@@ -118,7 +118,6 @@ void bm_packets(benchmark::State& state, Scene* scene, RayKind kind, Isa isa) {
             RTK_PICK_ISA(isa, packet_kernels<8>)(kTri));
 }
 // [ch09-packets-bench]
-// [ch09-bench]
 
 // [ch09-order-bench]
 void bm_order(benchmark::State& state, Scene* scene, RayKind kind) {

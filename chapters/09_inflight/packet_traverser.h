@@ -150,9 +150,8 @@ RTK_INLINE bool packet_leaf(RayPacket<P>& p, const TriangleM<M>* blocks, uint32_
         h.t.store(ts), h.u.store(us), h.v.store(vs);
         const uint32_t prim = t.prim[j];
         for (const int i : set_bits(mask)) {
-          Hit& hit = hits[i];
-          if (hit.found() && (ts[i] > hit.t || (ts[i] == hit.t && prim > hit.prim))) continue;
-          hit = Hit{ts[i], us[i], vs[i], prim};
+          if (!improves_on(ts[i], prim, hits[i])) continue;
+          hits[i] = Hit{ts[i], us[i], vs[i], prim};
           changed = true;
         }
       }
