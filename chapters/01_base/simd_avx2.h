@@ -113,7 +113,9 @@ struct vfloat<8> {
     store(lanes);
     return lanes[i];
   }
-  /// The lower and upper four lanes (a helper of this backend, not a wrapper operation).
+  /// Lanes 0-3 from `low`, 4-7 from `high`, and back (helpers of this backend, not wrapper
+  /// operations).
+  vfloat(vfloat<4> low, vfloat<4> high) : m(_mm256_set_m128(high.m, low.m)) {}
   vfloat<4> low() const { return _mm256_castps256_ps128(m); }
   vfloat<4> high() const { return _mm256_extractf128_ps(m, 1); }
 };

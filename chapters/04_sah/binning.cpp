@@ -31,14 +31,14 @@ struct Accumulator {
 
 Box3f bin_bounds(const Bins& bins, int axis, int first, int last) {
   Accumulator a;
-  for (int i = first; i < last; ++i) a.extend(bins.bin[axis][i].lower, bins.bin[axis][i].upper);
+  for (int i = first; i < last; ++i) a.extend(bins.bin[axis][i].lower, -bins.bin[axis][i].neg_upper);
   return a.box();
 }
 
 Box3f bin_centroid_bounds(const Bins& bins, int axis, int first, int last) {
   Accumulator a;
   for (int i = first; i < last; ++i)
-    a.extend(bins.bin[axis][i].cent_lower, bins.bin[axis][i].cent_upper);
+    a.extend(bins.bin[axis][i].cent_lower, -bins.bin[axis][i].neg_cent_upper);
   return a.box();
 }
 
@@ -59,7 +59,7 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   // order of the costs as it was. Every primitive is in one bin of axis 0, so those bins give
   // the set's box.
   Lanes4 lo = pos_inf, hi = neg_inf;
-  for (int i = 0; i < n; ++i) lo = min4(lo, bins.bin[0][i].lower), hi = max4(hi, bins.bin[0][i].upper);
+  for (int i = 0; i < n; ++i) lo = min4(lo, bins.bin[0][i].lower), hi = max4(hi, -bins.bin[0][i].neg_upper);
   float largest = 0.0f;
   for (int a = 0; a < 3; ++a)
     if (lo[a] <= hi[a]) largest = std::max({largest, std::fabs(lo[a]), std::fabs(hi[a])});
@@ -105,7 +105,7 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
     Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
     Counts4 c = none;
     for (int i = n - 1; i > 0; --i) {
-      for (int a = 0; a < 3; ++a) l[a] = min4(l[a], bins.bin[a][i].lower), u[a] = max4(u[a], bins.bin[a][i].upper);
+      for (int a = 0; a < 3; ++a) l[a] = min4(l[a], bins.bin[a][i].lower), u[a] = max4(u[a], -bins.bin[a][i].neg_upper);
       c += counts(i);
       const Lanes4 cost = areas(l, u) * tests(c);
       right_cost[i] = c == none ? pos_inf : cost;
@@ -119,7 +119,7 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
     Counts4 c = none;
     for (int i = 1; i < n; ++i) {
       for (int a = 0; a < 3; ++a)
-        l[a] = min4(l[a], bins.bin[a][i - 1].lower), u[a] = max4(u[a], bins.bin[a][i - 1].upper);
+        l[a] = min4(l[a], bins.bin[a][i - 1].lower), u[a] = max4(u[a], -bins.bin[a][i - 1].neg_upper);
       c += counts(i - 1);
       const Lanes4 total = areas(l, u) * tests(c) + right_cost[i];
       cost[i] = c == none ? pos_inf : total;

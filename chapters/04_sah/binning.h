@@ -111,19 +111,24 @@ struct BinMapping {
 };
 // [ch04-bin-mapping]
 
+// [ch04-bin-layout]
 /// One bin: the bounds of the boxes and of the centroids that fell into it, 64 bytes (a cache
-/// line). Plain data without constructors, so that a Bins object costs nothing until reset()
-/// touches the bins in use.
-struct Bin {
-  Lanes4 lower, upper;            ///< bounds of the primitives' boxes
-  Lanes4 cent_lower, cent_upper;  ///< bounds of their centroids
+/// line). The upper corners are kept negated, -max(x) being min(-x), so that every field grows
+/// by a minimum: a box is eight consecutive floats (lower, then negated upper; lane 3 of each
+/// is 0), which one 256-bit minimum grows at once (bin_kernels.cpp). Plain data without
+/// constructors, so that a Bins object costs nothing until reset() touches the bins in use.
+struct alignas(64) Bin {
+  Lanes4 lower, neg_upper;            ///< bounds of the primitives' boxes
+  Lanes4 cent_lower, neg_cent_upper;  ///< bounds of their centroids
 };
 static_assert(sizeof(Bin) == 64, "one bin per cache line");
+// [ch04-bin-layout]
 
 // [ch04-bins]
 /// The bins of one set of primitives on all three axes. Each bin keeps its centroids' bounds as
 /// well as its boxes' bounds: once a split is chosen, the children's centroid bounds, which
-/// the children's own bins need, are known without another pass over the primitives.
+/// the children's own bins need, are known without another pass over the primitives. The
+/// passes that fill the bins are compiled for each instruction set (bin_kernels.h).
 struct Bins {
   int num_bins = 0;
   Bin bin[3][kMaxSahBins];
@@ -134,40 +139,26 @@ struct Bins {
   /// Empties the first `n` bins on every axis.
   void reset(int n) {
     num_bins = n;
-    constexpr float inf = std::numeric_limits<float>::infinity();
-    const Lanes4 pos{inf, inf, inf, inf}, neg = -pos;
+    constexpr float f = std::numeric_limits<float>::infinity();
+    const Lanes4 inf{f, f, f, f};
     for (int axis = 0; axis < 3; ++axis)
-      for (int i = 0; i < n; ++i) bin[axis][i] = Bin{pos, neg, pos, neg};
+      for (int i = 0; i < n; ++i) bin[axis][i] = Bin{inf, inf, inf, inf};
     for (int i = 0; i < n; ++i) count[i][0] = count[i][1] = count[i][2] = count[i][3] = 0;
   }
-  /// Drops a primitive into its bin on each axis.
-  RTK_INLINE void add(const PrimRef& ref, const BinMapping& map) { add(PrimLanes(ref), map); }
-  RTK_INLINE void add(const PrimLanes& p, const BinMapping& map) {
-    const Ints4 i = map.bins(p.centroid);
-    const int i0 = i[0], i1 = i[1], i2 = i[2];
-    extend(bin[0][i0], p.lower, p.upper, p.centroid, p.centroid);
-    extend(bin[1][i1], p.lower, p.upper, p.centroid, p.centroid);
-    extend(bin[2][i2], p.lower, p.upper, p.centroid, p.centroid);
-    ++count[i0][0], ++count[i1][1], ++count[i2][2];
-  }
-  /// Adds another set's bins (same mapping) to these. Minimum, maximum and integer addition do
-  /// not depend on the order they are applied in, so the merged bins are the same whichever
+  /// Adds another set's bins (same mapping) to these. Minimum and integer addition do not
+  /// depend on the order they are applied in, so the merged bins are the same whichever
   /// thread binned which primitives.
   void merge(const Bins& other) {
     for (int axis = 0; axis < 3; ++axis)
       for (int i = 0; i < num_bins; ++i) {
         const Bin& o = other.bin[axis][i];
-        extend(bin[axis][i], o.lower, o.upper, o.cent_lower, o.cent_upper);
+        Bin& b = bin[axis][i];
+        b.lower = min4(o.lower, b.lower);
+        b.neg_upper = min4(o.neg_upper, b.neg_upper);
+        b.cent_lower = min4(o.cent_lower, b.cent_lower);
+        b.neg_cent_upper = min4(o.neg_cent_upper, b.neg_cent_upper);
         count[i][axis] += other.count[i][axis];
       }
-  }
-
- private:
-  RTK_INLINE static void extend(Bin& b, Lanes4 lo, Lanes4 hi, Lanes4 clo, Lanes4 chi) {
-    b.lower = min4(lo, b.lower);
-    b.upper = max4(hi, b.upper);
-    b.cent_lower = min4(clo, b.cent_lower);
-    b.cent_upper = max4(chi, b.cent_upper);
   }
 };
 // [ch04-bins]
@@ -198,5 +189,32 @@ struct Split {
 /// (lowest axis, then lowest border) among equals, so that the choice is reproducible. Each
 /// side is priced by its area times leaf_tests(count, leaf_block).
 Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block = 1);
+
+/// Where to cut a set: primitives whose bin on `axis` under `map` is below `pos` go left.
+struct SplitPlane {
+  const BinMapping* map = nullptr;
+  int axis = 0;
+  int pos = 0;
+
+  /// The same decision for a primitive already read into lanes, with the vector arithmetic of
+  /// BinMapping::bins(), which gives the same bin as bin().
+  RTK_INLINE bool goes_left(const PrimLanes& p) const { return map->bins(p.centroid)[axis] < pos; }
+  RTK_INLINE bool goes_left(const PrimRef& ref) const {
+    float lo[3], hi[3];
+    std::memcpy(lo, &ref.lower, sizeof lo);
+    std::memcpy(hi, &ref.upper, sizeof hi);
+    return map->bin(lo[axis] * 0.5f + hi[axis] * 0.5f, axis) <
+           pos;  // the centroid, as in centroid()
+  }
+};
+
+/// Where the two halves of a split are binned: each side's mapping (made from its centroid
+/// bounds, known from the parent's bins) and the bins it fills.
+struct ChildBins {
+  const BinMapping* left_map = nullptr;
+  Bins* left = nullptr;
+  const BinMapping* right_map = nullptr;
+  Bins* right = nullptr;
+};
 
 }  // namespace rtk::sah

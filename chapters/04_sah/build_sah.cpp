@@ -395,6 +395,8 @@ void check_sah_options(const SahBuildOptions& o, const std::string& who) {
     fail("intersection_cost must be finite and positive");
   if (o.threads < 0)
     fail("threads must be 0 (the caller's arena) or positive, got " + std::to_string(o.threads));
+  if (o.isa && !isa_supported(*o.isa))
+    fail("isa " + std::string(isa_name(*o.isa)) + " is not supported by this CPU");
 }
 
 }  // namespace rtk

@@ -8,13 +8,16 @@
 #include <utility>
 #include <vector>
 
+#include "04_sah/bin_kernels.h"
+
 namespace rtk::sah {
 
-void bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins) {
-  for (uint32_t i = 0; i < count; ++i) bins.add(refs[i], map);
+void bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins, Isa isa) {
+  RTK_PICK_ISA(isa, bin_prims)(refs, count, map, bins);
 }
 
-void parallel_bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins) {
+void parallel_bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& map, Bins& bins,
+                        Isa isa) {
   const uint32_t blocks = (count + kPartitionBlockPrims - 1) / kPartitionBlockPrims;
   tbb::enumerable_thread_specific<Bins> local([&] {
     Bins b;
@@ -26,53 +29,16 @@ void parallel_bin_prims(const PrimRef* refs, uint32_t count, const BinMapping& m
         Bins& b = local.local();
         for (uint32_t block = r.begin(); block != r.end(); ++block) {
           const uint32_t first = block * kPartitionBlockPrims;
-          bin_prims(refs + first, std::min(kPartitionBlockPrims, count - first), map, b);
+          bin_prims(refs + first, std::min(kPartitionBlockPrims, count - first), map, b, isa);
         }
       });
   for (const Bins& b : local) bins.merge(b);
 }
 
-// [ch04-partition]
 uint32_t partition_and_bin(PrimRef* refs, uint32_t count, const SplitPlane& plane,
-                           const ChildBins& out) {
-  // Hoare's partition: walk in from both ends, bin every primitive on the side it belongs to,
-  // and swap the pairs found on the wrong sides.
-  // Each primitive is read into lanes once; the two that stop the scans are binned from the
-  // lanes already read when they are swapped. The mappings are copied first: the bins are
-  // stored as the same vector type, and the compiler would otherwise read the mappings again
-  // after every store to a bin.
-  const BinMapping parent = *plane.map, left_map = *out.left_map, right_map = *out.right_map;
-  const SplitPlane cut{&parent, plane.axis, plane.pos};
-  Bins& left = *out.left;
-  Bins& right = *out.right;
-  uint32_t i = 0, j = count;
-  while (true) {
-    for (; i < j; ++i) {
-      const PrimLanes p(refs[i]);
-      if (!cut.goes_left(p)) break;
-      left.add(p, left_map);
-    }
-    if (i == j) return i;
-    const PrimLanes goes_right(refs[i]);
-    for (; i < j - 1; --j) {
-      const PrimLanes p(refs[j - 1]);
-      if (cut.goes_left(p)) break;
-      right.add(p, right_map);
-    }
-    if (i == j - 1) {  // refs[i] was the last one: it goes right
-      right.add(goes_right, right_map);
-      return i;
-    }
-    // refs[i] belongs right and refs[j - 1] left, and i < j - 1.
-    const PrimLanes goes_left(refs[j - 1]);
-    std::swap(refs[i], refs[j - 1]);
-    left.add(goes_left, left_map);
-    right.add(goes_right, right_map);
-    ++i;
-    --j;
-  }
+                           const ChildBins& out, Isa isa) {
+  return RTK_PICK_ISA(isa, partition_and_bin)(refs, count, plane, out);
 }
-// [ch04-partition]
 
 namespace {
 
@@ -98,7 +64,7 @@ void for_each_position(const std::vector<Run>& runs, const std::vector<uint32_t>
 
 // [ch04-parallel-partition]
 uint32_t parallel_partition_and_bin(PrimRef* refs, uint32_t count, const SplitPlane& plane,
-                                    const ChildBins& out) {
+                                    const ChildBins& out, Isa isa) {
   // Partition every block on its own, binning as the serial partition does.
   const uint32_t blocks = (count + kPartitionBlockPrims - 1) / kPartitionBlockPrims;
   std::vector<uint32_t> left_in_block(blocks);
@@ -118,7 +84,7 @@ uint32_t parallel_partition_and_bin(PrimRef* refs, uint32_t count, const SplitPl
                       for (uint32_t block = r.begin(); block != r.end(); ++block) {
                         const uint32_t first = block * kPartitionBlockPrims;
                         const uint32_t n = std::min(kPartitionBlockPrims, count - first);
-                        left_in_block[block] = partition_and_bin(refs + first, n, plane, mine);
+                        left_in_block[block] = partition_and_bin(refs + first, n, plane, mine, isa);
                       }
                     });
   out.left->reset(out.left_map->num_bins);

@@ -43,9 +43,9 @@ PrimSet make_root_set(PrimRef* refs, uint32_t count, const Box3f& bounds, const 
   auto bins = std::make_unique<Bins>();
   bins->reset(map.num_bins);
   if (count >= kLargeJobPrims)
-    parallel_bin_prims(refs, count, map, *bins);
+    parallel_bin_prims(refs, count, map, *bins, binning_isa(options));
   else
-    bin_prims(refs, count, map, *bins);
+    bin_prims(refs, count, map, *bins, binning_isa(options));
   evaluate(set, *bins, map, options);
   return set;
 }
@@ -65,7 +65,7 @@ PrimSet fallback_half(PrimRef* refs, uint32_t begin, uint32_t end, const SahBuil
   const BinMapping map(half.centroids, bins_for(half.size(), options.bins));
   Bins bins;
   bins.reset(map.num_bins);
-  bin_prims(refs + begin, half.size(), map, bins);
+  bin_prims(refs + begin, half.size(), map, bins, binning_isa(options));
   evaluate(half, bins, map, options);
   return half;
 }
@@ -90,13 +90,14 @@ std::pair<PrimSet, PrimSet> split_set(const PrimSet& set, PrimRef* refs,
   Bins left_bins, right_bins;
   const SplitPlane plane{&parent_map, s.axis, s.pos};
   const ChildBins out{&left_map, &left_bins, &right_map, &right_bins};
+  const Isa isa = binning_isa(options);
   uint32_t left_count;
   if (set.size() >= kLargeJobPrims) {
-    left_count = parallel_partition_and_bin(refs + set.begin, set.size(), plane, out);
+    left_count = parallel_partition_and_bin(refs + set.begin, set.size(), plane, out, isa);
   } else {
     left_bins.reset(left_map.num_bins);
     right_bins.reset(right_map.num_bins);
-    left_count = partition_and_bin(refs + set.begin, set.size(), plane, out);
+    left_count = partition_and_bin(refs + set.begin, set.size(), plane, out, isa);
   }
   // Binning and partitioning classify with the same function, so the counts agree; if they
   // did not, the children's boxes would not bound their primitives.

@@ -6,8 +6,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
+#include "01_base/cpu_features.h"
 #include "02_bvh2/build_tree.h"
 
 namespace rtk {
@@ -93,7 +95,13 @@ struct SahBuildOptions {
   /// 0: run in the caller's TBB task arena (all cores unless the caller limited them);
   /// n > 0: run in a private arena of n threads. The tree is the same either way.
   int threads = 0;
+  /// The variant of the binning passes (bin_kernels.h); nothing: the best the CPU runs. The
+  /// tree is the same for every variant.
+  std::optional<Isa> isa;
 };
+
+/// The variant of the binning passes the options ask for.
+inline Isa binning_isa(const SahBuildOptions& options) { return options.isa.value_or(best_isa()); }
 
 /// Options for leaves stored in blocks of `leaf_block` triangles tested together: a leaf is
 /// priced by its blocks, one block at the price of a node step (intersection_cost 1), and may

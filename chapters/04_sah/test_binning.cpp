@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "04_sah/bin_kernels.h"
 #include "04_sah/binning.h"
 #include "04_sah/partition.h"
 #include "testing/scenes.h"
@@ -38,7 +39,7 @@ Binned bin_all(const std::vector<PrimRef>& refs, int n) {
   for (const auto& r : refs) cent.extend(centroid(r));
   Binned out{BinMapping(cent, n), std::make_unique<Bins>()};
   out.bins->reset(n);
-  bin_prims(refs.data(), uint32_t(refs.size()), out.map, *out.bins);
+  bin_prims(refs.data(), uint32_t(refs.size()), out.map, *out.bins, best_isa());
   return out;
 }
 
@@ -165,15 +166,15 @@ TEST_CASE("ch04: one-pass partition sends each primitive to its side and bins it
   right->reset(32);
   const SplitPlane plane{&map, s.axis, s.pos};
   const uint32_t mid = partition_and_bin(refs.data(), uint32_t(refs.size()), plane,
-                                         {&left_map, left.get(), &right_map, right.get()});
+                                         {&left_map, left.get(), &right_map, right.get()}, best_isa());
   CHECK(mid == s.left_count);
   for (uint32_t i = 0; i < refs.size(); ++i) CHECK(plane.goes_left(refs[i]) == (i < mid));
   // The bins filled in passing equal bins filled by separate passes over each side.
   auto left2 = std::make_unique<Bins>(), right2 = std::make_unique<Bins>();
   left2->reset(32);
   right2->reset(32);
-  bin_prims(refs.data(), mid, left_map, *left2);
-  bin_prims(refs.data() + mid, uint32_t(refs.size()) - mid, right_map, *right2);
+  bin_prims(refs.data(), mid, left_map, *left2, best_isa());
+  bin_prims(refs.data() + mid, uint32_t(refs.size()) - mid, right_map, *right2, best_isa());
   CHECK(same_bins(*left, *left2));
   CHECK(same_bins(*right, *right2));
   CHECK(bin_bounds(*left, 0, 0, 32) == s.left_bounds);
@@ -199,7 +200,7 @@ TEST_CASE(
     tbb::task_arena arena(threads);
     return arena.execute([&] {
       return parallel_partition_and_bin(refs.data(), n, plane,
-                                        {&left_map, &left, &right_map, &right});
+                                        {&left_map, &left, &right_map, &right}, best_isa());
     });
   };
   // Allow four threads on a machine with fewer cores (TBB caps arenas at the core count).
@@ -224,7 +225,8 @@ TEST_CASE(
   ls->reset(32);
   rs->reset(32);
   const uint32_t mids =
-      partition_and_bin(serial.data(), n, plane, {&left_map, ls.get(), &right_map, rs.get()});
+      partition_and_bin(serial.data(), n, plane, {&left_map, ls.get(), &right_map, rs.get()},
+                        best_isa());
   CHECK(mids == mid1);
   CHECK(same_bins(*ls, *l1));
   CHECK(same_bins(*rs, *r1));
@@ -237,3 +239,50 @@ TEST_CASE(
   CHECK(sides_ok);
   CHECK(std::count(count.begin(), count.end(), 1) == std::ptrdiff_t(n));
 }
+
+// [ch04-test-bin-kernels]
+TEST_CASE("ch04: every ISA's binning passes fill the scalar variant's bins and order") {
+  // Real boxes and corner cases: degenerate triangles (flat boxes, equal centroids), zeros
+  // (+0 lower corners, whose negated upper corners are -0) and a huge coordinate.
+  TriangleMesh mesh = test::make_random_soup(3000, 41);
+  test::add_degenerate_triangles(mesh, 200, 42);
+  std::vector<PrimRef> input = make_prim_refs(mesh);
+  input.push_back(box_ref({0, 0, 0}, {0, 0, 0}, 90000));
+  input.push_back(box_ref({-1e30f, 0, 0}, {-1e29f, 1, 1}, 90001));
+  const uint32_t n = uint32_t(input.size());
+  Box3f cent;
+  for (const auto& r : input) cent.extend(centroid(r));
+  const BinMapping map(cent, 32);
+  Bins scalar_bins;
+  scalar_bins.reset(32);
+  scalar::bin_prims(input.data(), n, map, scalar_bins);
+  const Split s = find_best_split(scalar_bins, map);
+  REQUIRE(s.valid());
+  const SplitPlane plane{&map, s.axis, s.pos};
+  const BinMapping left_map(s.left_centroids, 16), right_map(s.right_centroids, 24);
+  auto partition = [&](auto kernel, std::vector<PrimRef>& refs, Bins& left, Bins& right) {
+    refs = input;
+    left.reset(left_map.num_bins);
+    right.reset(right_map.num_bins);
+    return kernel(refs.data(), n, plane, ChildBins{&left_map, &left, &right_map, &right});
+  };
+  std::vector<PrimRef> scalar_refs;
+  auto scalar_left = std::make_unique<Bins>(), scalar_right = std::make_unique<Bins>();
+  const uint32_t scalar_mid =
+      partition(scalar::partition_and_bin, scalar_refs, *scalar_left, *scalar_right);
+  CHECK(scalar_mid == s.left_count);
+  for (Isa isa : supported_isas()) {
+    CAPTURE(isa_name(isa));
+    auto bins = std::make_unique<Bins>();
+    bins->reset(32);
+    RTK_PICK_ISA(isa, bin_prims)(input.data(), n, map, *bins);
+    CHECK(same_bins(*bins, scalar_bins));
+    std::vector<PrimRef> refs;
+    auto left = std::make_unique<Bins>(), right = std::make_unique<Bins>();
+    CHECK(partition(RTK_PICK_ISA(isa, partition_and_bin), refs, *left, *right) == scalar_mid);
+    CHECK(std::memcmp(refs.data(), scalar_refs.data(), n * sizeof(PrimRef)) == 0);
+    CHECK(same_bins(*left, *scalar_left));
+    CHECK(same_bins(*right, *scalar_right));
+  }
+}
+// [ch04-test-bin-kernels]

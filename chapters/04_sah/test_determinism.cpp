@@ -57,6 +57,24 @@ TEST_CASE_TEMPLATE("ch04: one, two and four threads build the same tree", W,
 }
 // [ch04-test-determinism]
 
+TEST_CASE_TEMPLATE("ch04: every ISA's binning builds the same tree", W, std::integral_constant<int, 4>,
+                   std::integral_constant<int, 8>) {
+  constexpr int N = W::value;
+  const TriangleMesh soup = test::make_random_soup(int(kLargeJobPrims + 5000), 33);
+  const std::vector<PrimRef> refs = make_prim_refs(soup);
+  SahBuildOptions options;
+  options.isa = Isa::scalar;
+  SahBuildStats scalar_stats;
+  const BuildTree<N> scalar_tree = build_binned_sah<N>(refs, options, &scalar_stats);
+  for (Isa isa : supported_isas()) {
+    CAPTURE(isa_name(isa));
+    options.isa = isa;
+    SahBuildStats stats;
+    CHECK(test::identical(build_binned_sah<N>(refs, options, &stats), scalar_tree));
+    CHECK(same_stats(stats, scalar_stats));
+  }
+}
+
 TEST_CASE("ch04: determinism holds with every option, and in the caller's arena") {
   const std::vector<PrimRef> refs =
       make_prim_refs(test::make_terrain(140, 33));  // 39,200 triangles

@@ -108,9 +108,9 @@ class Builder {
       auto bins = std::make_unique<sah::Bins>();
       bins->reset(s.map.num_bins);
       if (n >= kSpatialLargeJobRefs)
-        sah::parallel_bin_prims(s.refs.data(), n, s.map, *bins);
+        sah::parallel_bin_prims(s.refs.data(), n, s.map, *bins, binning_isa(sah_));
       else
-        sah::bin_prims(s.refs.data(), n, s.map, *bins);
+        sah::bin_prims(s.refs.data(), n, s.map, *bins, binning_isa(sah_));
       s.object = sah::find_best_split(*bins, s.map, sah_.leaf_block);
       const double overlap = s.object.valid()
                                  ? half_area(intersection(s.object.left_bounds, s.object.right_bounds))
