@@ -4,21 +4,55 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdlib>
 #include <new>
 #include <utility>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace rtk {
 
-/// Allocates `bytes` aligned to `alignment` (a power of two); throws std::bad_alloc on failure.
+// [ch01-huge-pages]
+/// Blocks of this size or more are aligned to it and backed by huge pages where the system
+/// allows (see allocation_alignment()).
+inline constexpr std::size_t kHugePageBytes = std::size_t(2) << 20;
+
+/// The alignment for a block of `bytes`: `alignment`, or 2 MB for a block of 2 MB or more. A
+/// build writes its large arrays (references, nodes, leaves) into fresh memory, and the kernel
+/// maps fresh memory page by page as it is first touched: 4 KB pages cost one fault for every
+/// 128 references of 32 bytes, and in a virtual machine each fault costs microseconds. A block
+/// aligned to 2 MB can be mapped with 2 MB pages (advise_huge_pages()), 512 times fewer faults.
+inline std::size_t allocation_alignment(std::size_t bytes, std::size_t alignment) {
+  return bytes >= kHugePageBytes && alignment < kHugePageBytes ? kHugePageBytes : alignment;
+}
+
+/// Asks the kernel to map [p, p + bytes) with transparent huge pages (Linux, madvise
+/// MADV_HUGEPAGE; systems where transparent huge pages are "always" on need no asking, and
+/// where they are off the advice is ignored). It is advice: a refusal changes nothing but speed.
+inline void advise_huge_pages(void* p, std::size_t bytes) {
+#ifdef MADV_HUGEPAGE
+  if (bytes >= kHugePageBytes) ::madvise(p, bytes, MADV_HUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+// [ch01-huge-pages]
+
+/// Allocates `bytes` aligned to `alignment` (a power of two; 2 MB and huge pages for blocks of
+/// 2 MB or more) through the aligned operator new, so that a program that counts its
+/// allocations there sees these too; throws std::bad_alloc on failure.
 inline void* aligned_malloc(std::size_t bytes, std::size_t alignment) {
-  const std::size_t rounded = (bytes + alignment - 1) / alignment * alignment;
-  void* p = std::aligned_alloc(alignment, rounded == 0 ? alignment : rounded);
-  if (!p) throw std::bad_alloc();
+  alignment = allocation_alignment(bytes, alignment);
+  void* p = ::operator new(bytes == 0 ? 1 : bytes, std::align_val_t(alignment));
+  advise_huge_pages(p, bytes);
   return p;
 }
-inline void aligned_free(void* p) { std::free(p); }
+/// Frees what aligned_malloc(bytes, alignment) returned.
+inline void aligned_free(void* p, std::size_t bytes, std::size_t alignment) {
+  ::operator delete(p, std::align_val_t(allocation_alignment(bytes, alignment)));
+}
 
 /// A standard allocator with a fixed alignment, for std::vector of SIMD-loaded data.
 template <class T, std::size_t Alignment = 64>
@@ -28,7 +62,7 @@ struct AlignedAllocator {
   AlignedAllocator() = default;
   template <class U> AlignedAllocator(const AlignedAllocator<U, Alignment>&) {}
   T* allocate(std::size_t n) { return static_cast<T*>(aligned_malloc(n * sizeof(T), Alignment)); }
-  void deallocate(T* p, std::size_t) { aligned_free(p); }
+  void deallocate(T* p, std::size_t n) { aligned_free(p, n * sizeof(T), Alignment); }
   template <class U> bool operator==(const AlignedAllocator<U, Alignment>&) const { return true; }
 };
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "01_base/aligned.h"
 #include "01_base/box3.h"
 #include "01_base/triangle_mesh.h"
 
@@ -70,8 +71,8 @@ struct BuildTree {
   };
 
   Child root;                      ///< the whole scene: an inner node or (small scenes) a leaf
-  std::vector<Node> nodes;         ///< inner nodes; children point to higher indices only
-  std::vector<uint32_t> prim_ids;  ///< primitive IDs in leaf order (repeats after spatial splits)
+  aligned_vector<Node> nodes;      ///< inner nodes; children point to higher indices only
+  aligned_vector<uint32_t> prim_ids;  ///< primitive IDs in leaf order (repeats after spatial splits)
 
   bool empty() const { return root.leaf_count == 0 && nodes.empty(); }
 };

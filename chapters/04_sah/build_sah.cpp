@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "01_base/aligned.h"
 #include "04_sah/binning.h"
 #include "04_sah/node_filling.h"
 #include "04_sah/occluder_order.h"
@@ -206,14 +207,17 @@ void place(const Fragment<N>& fragment, uint32_t offset, typename BuildTree<N>::
 // [ch04-assemble]
 
 
+/// Frees the references, a block of `bytes` from aligned_malloc().
+struct ReleaseRefs {
+  std::size_t bytes = 0;
+  void operator()(PrimRef* p) const { aligned_free(p, bytes, 64); }
+};
+
 /// The builder's own copy of the references: valid ones only, in input order, with -0 turned
 /// into +0 (x + 0 does that) so that minimum and maximum never have to choose between two
 /// zeros, which would make the bounds depend on the order of a parallel reduction.
 struct Prepared {
-  struct Release {
-    void operator()(PrimRef* p) const { ::operator delete(p, std::align_val_t(64)); }
-  };
-  std::unique_ptr<PrimRef[], Release> refs;
+  std::unique_ptr<PrimRef[], ReleaseRefs> refs;
   uint32_t count = 0;
   Box3f bounds, centroids;
 };
@@ -230,9 +234,10 @@ Prepared prepare(size_t n, MakeRef&& make_ref) {
   std::vector<Box3f> bounds(blocks), centroids(blocks);
   Prepared p;
   // Raw storage, not a vector: every element is written below, so zeroing it first would be
-  // a wasted pass over the largest array of the build.
-  p.refs.reset(static_cast<PrimRef*>(
-      ::operator new(std::max<size_t>(n, 1) * sizeof(PrimRef), std::align_val_t(64))));
+  // a wasted pass over the largest array of the build. Being large, it goes on huge pages
+  // (aligned_malloc()).
+  const size_t bytes = std::max<size_t>(n, 1) * sizeof(PrimRef);
+  p.refs = {static_cast<PrimRef*>(aligned_malloc(bytes, 64)), ReleaseRefs{bytes}};
   PrimRef* out = p.refs.get();
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const size_t first = b * kPartitionBlockPrims, last = std::min(n, first + kPartitionBlockPrims);

@@ -179,7 +179,7 @@ TEST_CASE("ch04: empty, one and two primitives") {
   REQUIRE(single.root.is_leaf());
   CHECK(single.root.leaf_count == 1);
   CHECK(single.root.box == Box3f({0, 0, 0}, {1, 2, 3}));
-  CHECK(single.prim_ids == std::vector<uint32_t>{0});
+  CHECK(single.prim_ids == aligned_vector<uint32_t>{0});
 
   // Two unit cubes far apart, with Ct = Ci = 1: a leaf costs 2 * area(both) = 406, a split
   // 1 * area(both) + 3 + 3 = 209.

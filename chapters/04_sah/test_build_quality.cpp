@@ -115,7 +115,7 @@ TEST_CASE_TEMPLATE(
       options.rotations = false;
       const BuildTree<N> tree = build_binned_sah<N>(make_prim_refs(scene.mesh), options);
       REQUIRE(tree.root.index == 0);
-      auto fast = tree.nodes, exact = tree.nodes;
+      std::vector<typename BuildTree<N>::Node> fast(tree.nodes.begin(), tree.nodes.end()), exact = fast;
       const size_t applied = sah::rotate_tree<N>(fast, 3);
       CHECK(sah::rotate_tree<N>(exact, 3, /*price_every_swap=*/true) == applied);
       total_rotations += applied;

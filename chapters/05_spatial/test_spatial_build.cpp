@@ -214,7 +214,7 @@ TEST_CASE("ch05: degenerate inputs build valid trees") {
     one.triangles = {{0, 1, 2}};
     const BuildTree<4> t1 = build_spatial_sah<4>(one);
     CHECK(t1.root.is_leaf());
-    CHECK(t1.prim_ids == std::vector<uint32_t>{0});
+    CHECK(t1.prim_ids == aligned_vector<uint32_t>{0});
     TriangleMesh copies = one;
     copies.triangles.assign(100, {0, 1, 2});
     SpatialBuildStats stats;

@@ -31,7 +31,7 @@ struct BuiltStructure {
 template <class Structure, class Traced>
 BuiltStructure bind(Structure structure, TraceKernels kernels, Traced traced) {
   auto owner = std::make_shared<const Structure>(std::move(structure));
-  return {owner, traced(*owner), kernels, owner->bytes()};
+  return {owner, traced(*owner), kernels, owner->bytes(), {}};
 }
 // [ch10-built]
 
