@@ -40,7 +40,7 @@ PrimSet make_root_set(PrimRef* refs, uint32_t count, const Box3f& bounds, const 
   set.bounds = bounds;
   set.centroids = centroids;
   const BinMapping map(centroids, bins_for(count, options.bins));
-  auto bins = std::make_unique<Bins>();
+  auto bins = std::make_unique_for_overwrite<Bins>();
   bins->reset(map.num_bins);
   if (count >= kLargeJobPrims)
     parallel_bin_prims(refs, count, map, *bins, binning_isa(options));

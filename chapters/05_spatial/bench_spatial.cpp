@@ -148,6 +148,44 @@ void spatial_bins(benchmark::State& state, const Scene* scene, int bins) {
   state.counters["refs/tri"] = refs / double(scene->mesh.size());
 }
 
+// [ch05-bench-overlap]
+/// Where to look for spatial splits: binned builds with min_overlap = `percent` / 100, one
+/// thread. One iteration builds the object-split tree and the binned one, timing each; then
+/// both trace the same diffuse rays (best ISA, BVH4, five rounds each, alternating). The
+/// counters are the build-time ratio, the sets priced, the references per triangle, and the
+/// SAH and diffuse-ray speed relative to object splits.
+void overlap_rule(benchmark::State& state, const Scene* scene, int percent) {
+  SpatialBuildOptions object = options_for(Flavour::object), binned = options_for(Flavour::binned);
+  object.sah.threads = binned.sah.threads = 1;
+  binned.min_overlap = float(percent) / 100.0f;
+  double seconds[2] = {0, 0};
+  SpatialBuildStats stats;
+  BuildTree<4> trees[2];
+  for (auto _ : state) {
+    for (int k = 0; k < 2; ++k) {
+      const double start = thread_seconds();
+      trees[k] = build_spatial_sah<4>(scene->mesh, k == 0 ? object : binned, k == 0 ? nullptr : &stats);
+      seconds[k] += thread_seconds() - start;
+    }
+  }
+  const BVH4 bvh[2] = {make_bvh<4>(trees[0], scene->mesh), make_bvh<4>(trees[1], scene->mesh)};
+  const std::vector<Ray> rays = bench::diffuse_rays(scene->mesh, 1 << 14, 1);
+  std::vector<Hit> hits(rays.size());
+  double trace_seconds[2] = {0, 0};
+  for (int round = 0; round < 10; ++round) {
+    const double start = thread_seconds();
+    intersect(best_isa(), bvh[round % 2], rays, hits);
+    trace_seconds[round % 2] += thread_seconds() - start;
+  }
+  const double tris = double(scene->mesh.size());
+  state.counters["build_time"] = seconds[1] / seconds[0];
+  state.counters["searches"] = double(stats.spatial_searches);
+  state.counters["refs/tri"] = double(stats.references) / tris;
+  state.counters["sah"] = sah_cost(trees[1]) / sah_cost(trees[0]);
+  state.counters["diffuse_speed"] = trace_seconds[0] / trace_seconds[1];
+}
+// [ch05-bench-overlap]
+
 const bool registered = [] {
   for (const Scene& scene : scenes()) {
     benchmark::RegisterBenchmark(("build/" + scene.name).c_str(), build_ratios, &scene)
@@ -165,6 +203,11 @@ const bool registered = [] {
                                      &scene, bins)
             ->Unit(benchmark::kMillisecond)
             ->Iterations(2);
+    for (const int percent : {0, 2, 5, 10, 20, 40})
+      benchmark::RegisterBenchmark(("overlap/" + scene.name + "/" + std::to_string(percent) + "%").c_str(),
+                                   overlap_rule, &scene, percent)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(2);
     // The budget: diffuse rays through binned-split trees with 10 % to 200 % more references.
     for (const float budget : {0.1f, 0.3f, 0.6f, 1.0f, 2.0f})
       benchmark::RegisterBenchmark(("budget/" + scene.name + "/" + std::to_string(int(budget * 100)) + "%").c_str(),

@@ -3,7 +3,7 @@
 table at a time, so that the page can place each next to the prose about it.
 
     ch05_bench --benchmark_out=ch05.json --benchmark_out_format=json
-    python3 chapters/05_spatial/bench_tables.py build|trace|bins|budget ch05.json
+    python3 chapters/05_spatial/bench_tables.py build|trace|bins|budget|overlap ch05.json
     python3 chapters/05_spatial/bench_tables.py rtk TRACE.txt ... [COMPARE.txt]
 
 For `rtk`, each TRACE.txt is the JSON-line output of one `rtk trace` run, named
@@ -89,6 +89,18 @@ def budget_table(rows):
         print(f"| {p} % | " + " | ".join(cells) + " |")
 
 
+def overlap_table(rows):
+    print("| scene | min_overlap | build time / object | sets priced | refs/tri | SAH / object | "
+          "diffuse speed / object |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for scene in scenes_of(rows, "overlap"):
+        percents = sorted({int(n.split("/")[2].rstrip("%")) for n in rows if n.startswith(f"overlap/{scene}/")})
+        for p in percents:
+            b = rows[f"overlap/{scene}/{p}%"]
+            print(f"| {scene} | {p / 100:.2f} | {b['build_time']:.1f}x | {int(b['searches']):,} | "
+                  f"{b['refs/tri']:.2f} | {b['sah']:.3f} | {b['diffuse_speed']:.2f} |")
+
+
 def json_lines(path):
     with open(path) as f:
         return [json.loads(line) for line in f if line.startswith("{")]
@@ -119,7 +131,8 @@ def rtk_table(paths):
               f"{o[0]['bytes'] / 1e6:.2f}, {s[0]['bytes'] / 1e6:.2f} | {same} |")
 
 
-TABLES = {"build": build_table, "trace": trace_table, "bins": bins_table, "budget": budget_table}
+TABLES = {"build": build_table, "trace": trace_table, "bins": bins_table, "budget": budget_table,
+          "overlap": overlap_table}
 
 
 def main():
@@ -128,7 +141,7 @@ def main():
     elif len(sys.argv) == 3 and sys.argv[1] in TABLES:
         TABLES[sys.argv[1]](load(sys.argv[2]))
     else:
-        sys.exit("usage: bench_tables.py build|trace|bins|budget ch05.json, or rtk TRACE.txt ... [COMPARE.txt]")
+        sys.exit("usage: bench_tables.py build|trace|bins|budget|overlap ch05.json, or rtk TRACE.txt ... [COMPARE.txt]")
 
 
 if __name__ == "__main__":

@@ -52,8 +52,8 @@ struct Set {
 
 /// Counts every job adds to; the sums do not depend on the schedule.
 struct Counters {
-  std::atomic<size_t> inner{0}, leaves{0}, object{0}, spatial{0}, unsplit{0}, fallback{0},
-      rotations{0};
+  std::atomic<size_t> inner{0}, leaves{0}, searches{0}, object{0}, spatial{0}, unsplit{0},
+      fallback{0}, rotations{0};
 };
 
 /// A subtree built depth-first by one thread, in local indices.
@@ -98,14 +98,15 @@ class Builder {
 
   // [ch05-evaluate]
   /// Prices a set's splits: chapter 4's binned object split always; a spatial split only where
-  /// the object split's children overlap by more than alpha times the root's area.
+  /// the object split's children overlap by more than alpha times the root's area and by at
+  /// least min_overlap times the set's own.
   void evaluate(Set& s) const {
     const uint32_t n = s.size();
     s.object = sah::Split{};
     s.planes.clear();
     if (n > 1) {
       s.map = sah::BinMapping(s.centroids, sah::bins_for(n, sah_.bins));
-      auto bins = std::make_unique<sah::Bins>();
+      auto bins = std::make_unique_for_overwrite<sah::Bins>();
       bins->reset(s.map.num_bins);
       if (n >= kSpatialLargeJobRefs)
         sah::parallel_bin_prims(s.refs.data(), n, s.map, *bins, binning_isa(sah_));
@@ -116,11 +117,14 @@ class Builder {
                                  ? half_area(intersection(s.object.left_bounds, s.object.right_bounds))
                                  : std::numeric_limits<double>::infinity();
       s.spatial_tried = spatial_on_ && s.budget > 0;
-      if (s.spatial_tried && overlap > kSpatialAlpha * root_area_)
+      if (s.spatial_tried && overlap > kSpatialAlpha * root_area_ &&
+          overlap >= double(options_.min_overlap) * half_area(s.bounds)) {
+        ++counters_.searches;
         s.planes = options_.mode == SpatialSplitMode::centre
                        ? find_centre_splits(s.refs, s.bounds, mesh_, sah_.leaf_block)
                        : find_binned_splits(s.refs, s.bounds, mesh_, options_.spatial_bins,
                                             sah_.leaf_block);
+      }
     }
     choose(s);
   }
@@ -249,6 +253,7 @@ void check_options(const SpatialBuildOptions& o) {
     fail("spatial_bins must be in [2, " + std::to_string(kMaxSpatialBins) + "], got " +
          std::to_string(o.spatial_bins));
   if (!std::isfinite(o.budget) || o.budget < 0.0f) fail("budget must be finite and not negative");
+  if (!(o.min_overlap >= 0.0f && o.min_overlap <= 1.0f)) fail("min_overlap must be in [0, 1]");
 }
 
 template <int N>
@@ -415,6 +420,7 @@ BuildTree<N> build(const TriangleMesh& mesh, const SpatialBuildOptions& options,
     stats->budget = budget;
     stats->inner_nodes = counters.inner;
     stats->leaves = counters.leaves;
+    stats->spatial_searches = counters.searches;
     stats->object_splits = counters.object;
     stats->spatial_splits = counters.spatial;
     stats->unsplit = counters.unsplit;

@@ -49,6 +49,13 @@ struct SpatialBuildOptions {
   /// triangles (0.3 = at most 30 % more references than triangles). Finite, at least 0; 0 makes
   /// the same tree as chapter 4's builder.
   float budget = 0.3f;
+  /// Spatial splits are priced only where the object split's children overlap by at least this
+  /// fraction of the set's own surface area, besides SBVH's alpha (kSpatialAlpha). Alpha, a
+  /// fraction of the root's area, lets nearly every set of a scene of long triangles be priced;
+  /// this rule keeps the pricing to the sets whose object split is poor for its size, where a
+  /// spatial split can win. 0 prices every set alpha passes; 1 prices (almost) none. The default
+  /// is measured in chapter 5 ("Where to look for spatial splits").
+  float min_overlap = 0.1f;
   /// Reference unsplitting (Stich et al., section 4.3): a reference that straddles a spatial
   /// split plane goes wholly to one side when that is cheaper than cutting it in two.
   bool unsplit = true;
@@ -62,6 +69,7 @@ struct SpatialBuildStats {
   size_t budget = 0;          ///< duplicates the budget allowed
   size_t inner_nodes = 0;     ///< nodes of the tree
   size_t leaves = 0;          ///< leaf children (including a leaf root)
+  size_t spatial_searches = 0;  ///< sets whose spatial split planes were priced
   size_t object_splits = 0;   ///< binary splits made by object partitioning
   size_t spatial_splits = 0;  ///< binary splits made by a spatial plane
   size_t unsplit = 0;         ///< straddling references kept whole by unsplitting

@@ -96,6 +96,38 @@ TEST_CASE("ch05: spatial splits lower the SAH where triangles are long and diago
   }
 }
 
+TEST_CASE("ch05: spatial splits are priced only where the object split's children overlap") {
+  // Two long thin triangles that cross: the object split puts one on each side, and their boxes,
+  // [0, 1] x [0, 1] x [0, 0.01] and [0.5, 1.5] x [0, 1] x [0, 0.01], overlap in
+  // [0.5, 1] x [0, 1] x [0, 0.01]: half-areas 0.5 + 0.01 + 0.005 = 0.515 of the set's
+  // 1.5 + 0.01 + 0.015 = 1.525, a fraction of 0.3377.
+  TriangleMesh cross;
+  cross.vertices = {{0, 0, 0}, {1, 1, 0}, {1, 1, 0.01f}, {0.5f, 1, 0}, {1.5f, 0, 0}, {1.5f, 0, 0.01f}};
+  cross.triangles = {{0, 1, 2}, {3, 4, 5}};
+  SpatialBuildOptions options;
+  options.budget = 1.0f;
+  for (const float fraction : {0.0f, 0.33f, 0.34f, 1.0f}) {
+    CAPTURE(fraction);
+    options.min_overlap = fraction;
+    SpatialBuildStats stats;
+    build_spatial_sah<4>(cross, options, &stats);
+    CHECK(stats.spatial_searches == (fraction < 0.3377f ? 1u : 0u));
+  }
+  // Where no set is priced, nothing is duplicated and the tree is chapter 4's.
+  const TriangleMesh slivers = test::make_slivers(2000, 515);
+  options.min_overlap = 1.0f;
+  SpatialBuildStats stats;
+  const BuildTree<4> tree = build_spatial_sah<4>(slivers, options, &stats);
+  CHECK(stats.spatial_searches == 0);
+  CHECK(stats.references == stats.triangles);
+  CHECK(sah_cost(tree) == doctest::Approx(sah_cost(build_binned_sah<4>(slivers, options.sah))).epsilon(1e-9));
+  // The default rule still finds the slivers' spatial splits.
+  options.min_overlap = SpatialBuildOptions{}.min_overlap;
+  build_spatial_sah<4>(slivers, options, &stats);
+  CHECK(stats.spatial_searches > 0);
+  CHECK(stats.spatial_splits > 0);
+}
+
 TEST_CASE("ch05: the budget bounds the references, and a larger budget buys more splits") {
   const TriangleMesh mesh = test::make_slivers(1500, 513);
   size_t previous = 0;
@@ -245,6 +277,11 @@ TEST_CASE("ch05: invalid options are refused with the option's name") {
   CHECK(refuses(o, "spatial_bins"));
   o.spatial_bins = kMaxSpatialBins + 1;
   CHECK(refuses(o, "spatial_bins"));
+  o = {};
+  o.min_overlap = -0.5f;
+  CHECK(refuses(o, "min_overlap"));
+  o.min_overlap = std::numeric_limits<float>::infinity();
+  CHECK(refuses(o, "min_overlap"));
   o = {};
   o.sah.bins = 1;
   CHECK(refuses(o, "bins"));
