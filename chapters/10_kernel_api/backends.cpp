@@ -1,5 +1,7 @@
 #include "10_kernel_api/backends.h"
 
+#include <tbb/task_arena.h>
+
 #include <utility>
 
 #include "01_base/isa_dispatch.h"
@@ -14,11 +16,11 @@ namespace rtk::api {
 namespace {
 
 // The tree: chapter 4's binned SAH builder (object splits) or chapter 5's (object and spatial
-// splits under the default 30 % duplication budget), with `sah` and `threads` threads (the
-// tree is the same for any count).
+// splits under the default 30 % duplication budget), with `sah`, on the threads of the
+// caller's task arena (the tree is the same for any count).
 template <int N, bool Spatial>
-BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, int threads) {
-  sah.threads = threads;
+BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah) {
+  sah.threads = 0;
   if constexpr (Spatial) {
     SpatialBuildOptions options;
     options.sah = sah;
@@ -35,8 +37,15 @@ BuildTree<N> build_tree(const TriangleMesh& mesh, SahBuildOptions sah, int threa
 // in packets by chapter 9's kernels where it has them (BVH4 and BVH8).
 template <int N, bool Spatial>
 BuiltStructure build_layout(const TriangleMesh& mesh, Isa isa, int threads, TriangleConfig tri) {
-  const BuildTree<N> tree = build_tree<N, Spatial>(mesh, sah_options_for(tri.layout), threads);
-  BuiltStructure built = bind(make_layout_bvh<N>(tree, mesh, tri.layout, threads),
+  // One task arena for the tree and the layout (0 threads inside: the caller's arena), not one
+  // each: on a small mesh, making an arena and waking its threads costs a measurable part of
+  // the build.
+  tbb::task_arena arena(threads);
+  LayoutBVH<N> bvh = arena.execute([&] {
+    const BuildTree<N> tree = build_tree<N, Spatial>(mesh, sah_options_for(tri.layout));
+    return make_layout_bvh<N>(tree, mesh, tri.layout, 0);
+  });
+  BuiltStructure built = bind(std::move(bvh),
                               RTK_PICK_ISA(isa, intersector_kernels<N>)(tri),
                               [](const LayoutBVH<N>& bvh) { return &bvh.bvh; });
   if constexpr (N == 4 || N == 8) built.packets = RTK_PICK_ISA(isa, packet_kernels<N>)(tri);
