@@ -72,24 +72,17 @@ size_t blocks_for_leaf(size_t n) {
   return blocks;
 }
 
-/// Whether layout L's pack() writes every byte of the blocks it fills (a block without padding,
-/// every lane written): such a layout says so with `static constexpr bool kFillsBlocks = true`.
-template <LeafLayout L>
-constexpr bool fills_blocks = requires { requires L::kFillsBlocks; };
-
 /// Packs the blocks of one leaf holding triangles `prims` at byte `offset` of `leaves`, which
 /// holds them already, and returns its reference. The bytes were sized but not written (many
-/// threads pack at once, and zeroing them all first was a pass on one thread); unless the
-/// layout fills its blocks whole, they are zeroed here, leaf by leaf, so that a layout's
-/// unused bytes are the same in every build. (For triangle8 leaves the zeroing was a tenth of
-/// a BVH8 build.)
+/// threads pack at once, and zeroing them all first was a pass on one thread); they are zeroed
+/// here, leaf by leaf, so that a layout's unused bytes are the same in every build.
 template <LeafLayout L>
 NodeRef pack_leaf(LeafBlocks& leaves, size_t offset, const TriangleMesh& mesh,
                   std::span<const uint32_t> prims) {
   const size_t blocks = blocks_for_leaf<L>(prims.size());
   if (blocks == 0) return kEmptyLeaf;
   std::byte* out = leaves.bytes.data() + offset;
-  if constexpr (!fills_blocks<L>) std::memset(out, 0, blocks * sizeof(typename L::Block));
+  std::memset(out, 0, blocks * sizeof(typename L::Block));
   L::pack(mesh, prims, reinterpret_cast<typename L::Block*>(out));
   return make_leaf_ref(offset, uint32_t(blocks));
 }

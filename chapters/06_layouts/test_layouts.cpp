@@ -74,37 +74,6 @@ TEST_CASE("ch06: one, two and four threads make the same structure, byte for byt
   check_threads_make_the_same<8>(sphere);
 }
 
-/// Packs one leaf of `prims` with layout L over memory that held `fill` in every byte.
-template <LeafLayout L>
-std::vector<std::byte> packed_over(const TriangleMesh& mesh, std::span<const uint32_t> prims, std::byte fill) {
-  LeafBlocks leaves;
-  leaves.bytes.assign(blocks_for_leaf<L>(prims.size()) * sizeof(typename L::Block), fill);
-  pack_leaf<L>(leaves, 0, mesh, prims);
-  return {leaves.bytes.begin(), leaves.bytes.end()};
-}
-
-TEST_CASE("ch06: a layout that fills its blocks writes every byte of them") {
-  // pack_leaf() zeroes the blocks first only for layouts without kFillsBlocks, so a layout that
-  // claims it must leave no byte of what the memory held before: 3, 8 and 11 triangles (one
-  // of zero area) give partly and wholly used blocks.
-  TriangleMesh mesh = test::make_sphere(4, 8);
-  mesh.triangles.push_back({0, 0, 1});
-  for (const size_t n : {size_t(3), size_t(8), size_t(11)}) {
-    CAPTURE(n);
-    std::vector<uint32_t> prims(n);
-    for (size_t i = 0; i < n; ++i) prims[i] = uint32_t(mesh.size() - 1 - i * 3);
-    static_assert(fills_blocks<Triangle4Layout> && fills_blocks<Triangle8Layout>);
-    CHECK(packed_over<Triangle4Layout>(mesh, prims, std::byte{0}) ==
-          packed_over<Triangle4Layout>(mesh, prims, std::byte{0xa5}));
-    CHECK(packed_over<Triangle8Layout>(mesh, prims, std::byte{0}) ==
-          packed_over<Triangle8Layout>(mesh, prims, std::byte{0xa5}));
-    // A layout that does not claim it is zeroed first, whatever pack() writes.
-    static_assert(!fills_blocks<Triangle1Layout>);
-    CHECK(packed_over<Triangle1Layout>(mesh, prims, std::byte{0}) ==
-          packed_over<Triangle1Layout>(mesh, prims, std::byte{0xa5}));
-  }
-}
-
 TEST_CASE("ch06: every layout agrees with the oracle through BVH2, every ISA bit for bit") {
   for (const test::LayoutScene& scene : test::layout_scenes()) check_every_layout<2>(scene);
 }

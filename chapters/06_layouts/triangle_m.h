@@ -37,8 +37,6 @@ struct TriangleMLayout {
   static constexpr std::string_view kName = M == 4 ? "triangle4" : "triangle8";
   static constexpr int kWidth = M;
   using Block = TriangleM<M>;
-  /// pack() writes every lane of every row, and a block has no padding (the asserts above).
-  static constexpr bool kFillsBlocks = true;
   static size_t block_count(size_t triangles) { return (triangles + M - 1) / M; }
   /// Fills block_count(prims.size()) blocks with the triangles `prims`, in order.
   static void pack(const TriangleMesh& mesh, std::span<const uint32_t> prims, Block* out);
