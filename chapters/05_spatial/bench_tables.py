@@ -90,14 +90,14 @@ def budget_table(rows):
 
 
 def overlap_table(rows):
-    print("| scene | min_overlap | build time / object | sets priced | refs/tri | SAH / object | "
-          "diffuse speed / object |")
-    print("|---|---:|---:|---:|---:|---:|---:|")
+    print("| scene | min_overlap | build | build / object's | sets priced | refs/tri | SAH / object's | "
+          "diffuse speed / object's |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
     for scene in scenes_of(rows, "overlap"):
         percents = sorted({int(n.split("/")[2].rstrip("%")) for n in rows if n.startswith(f"overlap/{scene}/")})
         for p in percents:
             b = rows[f"overlap/{scene}/{p}%"]
-            print(f"| {scene} | {p / 100:.2f} | {b['build_time']:.1f}x | {int(b['searches']):,} | "
+            print(f"| {scene} | {p / 100:.2f} | {b['build_ms']:.0f} ms | {b['build_time']:.1f}x | {int(b['searches']):,} | "
                   f"{b['refs/tri']:.2f} | {b['sah']:.3f} | {b['diffuse_speed']:.2f} |")
 
 

@@ -55,7 +55,7 @@ struct SpatialBuildOptions {
   /// this rule keeps the pricing to the sets whose object split is poor for its size, where a
   /// spatial split can win. 0 prices every set alpha passes; 1 prices (almost) none. The default
   /// is measured in chapter 5 ("Where to look for spatial splits").
-  float min_overlap = 0.1f;
+  float min_overlap = 0.2f;
   /// Reference unsplitting (Stich et al., section 4.3): a reference that straddles a spatial
   /// split plane goes wholly to one side when that is cheaper than cutting it in two.
   bool unsplit = true;
