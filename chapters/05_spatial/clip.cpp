@@ -70,22 +70,16 @@ float round_up(double d) { return -round_down(-d); }
 
 bool finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-/// The polygon's bounds, rounded outwards to floats and kept inside `box`.
-Box3f bounds_in(const Polygon& poly, const Box3f& box) {
-  if (poly.n == 0) return {};
-  std::array<double, 3> low = poly.v[0], high = poly.v[0];
-  for (int i = 1; i < poly.n; ++i)
-    for (int axis = 0; axis < 3; ++axis) {
-      const double x = poly.v[i][axis];
-      low[axis] = x < low[axis] ? x : low[axis];
-      high[axis] = x > high[axis] ? x : high[axis];
-    }
-  // (+ 0.0f turns a negative zero into a positive one, as chapter 4's builder expects.) The
-  // corners are made whole, not written axis by axis, for the reason given in split_plane().
-  auto lower = [&](int k) { return std::max(round_down(low[k]), box.lower[k]) + 0.0f; };
-  auto upper = [&](int k) { return std::min(round_up(high[k]), box.upper[k]) + 0.0f; };
-  return {Vec3f(lower(0), lower(1), lower(2)), Vec3f(upper(0), upper(1), upper(2))};
+/// The polygon's exact bounds, kept inside `box`.
+ExactBox exact_bounds_in(const Polygon& poly, const Box3f& box) {
+  ExactBox b;
+  for (int i = 0; i < poly.n; ++i) b.extend(poly.v[i]);
+  b.clamp_to(box);
+  return b;
 }
+
+/// The polygon's bounds, rounded outwards to floats and kept inside `box`.
+Box3f bounds_in(const Polygon& poly, const Box3f& box) { return exact_bounds_in(poly, box).rounded(); }
 
 bool usable(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {
   return !box.empty() && finite(a) && finite(b) && finite(c) && finite(box.lower) && finite(box.upper);
@@ -107,8 +101,16 @@ Polygon clip_to_box(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f&
 
 }  // namespace
 
+Box3f ExactBox::rounded() const {
+  // (+ 0.0f turns a negative zero into a positive one, as chapter 4's builder expects.) The
+  // corners are made whole, not written axis by axis, for the reason given in split_plane().
+  auto low = [&](int k) { return round_down(lower[k]) + 0.0f; };
+  auto high = [&](int k) { return round_up(upper[k]) + 0.0f; };
+  return {Vec3f(low(0), low(1), low(2)), Vec3f(high(0), high(1), high(2))};
+}
+
 void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box, int axis,
-                   std::span<const float> planes, std::span<Box3f> out) {
+                   std::span<const float> planes, std::span<ExactBox> out) {
   if (!usable(a, b, c, box) || out.size() != planes.size() + 1) return;
   // Two polygons in turn hold what is left above the planes cut so far.
   std::array<Polygon, 2> rest{clip_to_box(a, b, c, box), Polygon{}};
@@ -119,12 +121,12 @@ void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& 
     const float p = std::clamp(planes[i], box.lower[axis], box.upper[axis]);
     slab.upper[axis] = p;
     split_plane(rest[cur], axis, double(p), &piece, &rest[1 - cur]);
-    out[i].extend(bounds_in(piece, slab));
+    out[i].extend(exact_bounds_in(piece, slab));
     cur = 1 - cur;
     slab.lower[axis] = p;
   }
   slab.upper[axis] = box.upper[axis];
-  out[planes.size()].extend(bounds_in(rest[cur], slab));
+  out[planes.size()].extend(exact_bounds_in(rest[cur], slab));
 }
 
 Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {

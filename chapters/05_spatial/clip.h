@@ -4,12 +4,53 @@
 /// and Dietrich, "Spatial Splits in Bounding Volume Hierarchies", HPG 2009, section 4.2).
 #pragma once
 
+#include <array>
+#include <limits>
 #include <span>
 #include <utility>
 
 #include "01_base/box3.h"
 
 namespace rtk {
+
+// [ch05-exact-box]
+/// A box in double precision, grown by the exact points of clipped polygons and rounded to
+/// floats only when a float box is wanted. rounded() rounds each bound outwards, and rounding
+/// outwards is monotone: the rounding of a union (or of a box kept inside a float box) is the
+/// union of the roundings (the same box kept inside it). So a spatial bin can gather the
+/// exact bounds of every piece chopped into it and round once, with the bits that rounding
+/// each piece would give.
+struct ExactBox {
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::array<double, 3> lower{kInf, kInf, kInf}, upper{-kInf, -kInf, -kInf};
+
+  void extend(const std::array<double, 3>& p) {
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = p[k] < lower[k] ? p[k] : lower[k];
+      upper[k] = p[k] > upper[k] ? p[k] : upper[k];
+    }
+  }
+  void extend(const ExactBox& b) {
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = b.lower[k] < lower[k] ? b.lower[k] : lower[k];
+      upper[k] = b.upper[k] > upper[k] ? b.upper[k] : upper[k];
+    }
+  }
+  void extend(const Box3f& b) {
+    extend(ExactBox{{double(b.lower.x), double(b.lower.y), double(b.lower.z)},
+                    {double(b.upper.x), double(b.upper.y), double(b.upper.z)}});
+  }
+  /// Keeps the box inside `box`.
+  void clamp_to(const Box3f& box) {
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = double(box.lower[k]) > lower[k] ? double(box.lower[k]) : lower[k];
+      upper[k] = double(box.upper[k]) < upper[k] ? double(box.upper[k]) : upper[k];
+    }
+  }
+  /// The smallest float box that contains this one (an empty box stays empty).
+  Box3f rounded() const;
+};
+// [ch05-exact-box]
 
 /// The bounds of the part of triangle (a, b, c) inside `box` (closed): the triangle is clipped as
 /// a polygon against the box's six planes (Sutherland and Hodgman, "Reentrant polygon
@@ -29,9 +70,9 @@ std::pair<Box3f, Box3f> split_triangle_box(const Vec3f& a, const Vec3f& b, const
 /// planes[0] < planes[1] < ... (SBVH's reference chopping, done incrementally: the polygon is
 /// clipped to the box once, then each plane splits off one piece), and extends out[i] by the
 /// bounds of the piece between planes[i - 1] and planes[i] (out holds planes.size() + 1 boxes;
-/// the first and last pieces end at the box). Each piece's bounds are rounded and kept in their
-/// slab as clip_triangle() keeps its result in its box.
+/// the first and last pieces end at the box). Each piece's bounds are exact and kept in their
+/// slab; out[i].rounded() is what clip_triangle() gives for that slab, bit for bit.
 void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box, int axis,
-                   std::span<const float> planes, std::span<Box3f> out);
+                   std::span<const float> planes, std::span<ExactBox> out);
 
 }  // namespace rtk

@@ -87,10 +87,11 @@ struct Slabs {
   }
 };
 
-/// Per slab: the bounds of the pieces chopped into it, and how many references enter (have
-/// their first slab) and exit (their last slab) there.
+/// Per slab: the exact bounds of the pieces chopped into it (rounded to floats once, for the
+/// sweep), and how many references enter (have their first slab) and exit (their last slab)
+/// there.
 struct SpatialBins {
-  std::array<std::array<Box3f, kMaxSpatialBins>, 3> bounds;
+  std::array<std::array<ExactBox, kMaxSpatialBins>, 3> bounds;
   std::array<std::array<uint32_t, kMaxSpatialBins>, 3> entry{}, exit{};
 
   void merge(const SpatialBins& o, int bins) {
@@ -122,7 +123,7 @@ void bin_refs(const PrimRef* refs, size_t first, size_t last, const std::array<S
       for (int i = f + 1; i <= l; ++i) planes[size_t(i - f - 1)] = s.plane(i);
       chop_triangle(mesh.vertex(ref.prim, 0), mesh.vertex(ref.prim, 1), mesh.vertex(ref.prim, 2), box,
                     axis, std::span<const float>(planes.data(), size_t(l - f)),
-                    std::span<Box3f>(out.bounds[axis].data() + f, size_t(l - f + 1)));
+                    std::span<ExactBox>(out.bounds[axis].data() + f, size_t(l - f + 1)));
     }
   }
 }
@@ -195,20 +196,23 @@ std::vector<SpatialSplit> find_binned_splits(std::span<const PrimRef> refs, cons
   std::vector<SpatialSplit> best;
   for (int axis = 0; axis < 3; ++axis) {
     if (!slabs[axis].usable) continue;
+    // Each slab's bounds rounded once, for all the pieces in it.
+    std::array<Box3f, kMaxSpatialBins> slab_bounds;
+    for (int i = 0; i < bins; ++i) slab_bounds[i] = sb.bounds[axis][i].rounded();
     // Sweep from the right: bounds and exit counts of slabs [i, bins).
     std::array<Box3f, kMaxSpatialBins> right_bounds;
     std::array<uint32_t, kMaxSpatialBins> right_count;
     Box3f r;
     uint32_t nr = 0;
     for (int i = bins - 1; i > 0; --i) {
-      r.extend(sb.bounds[axis][i]), nr += sb.exit[axis][i];
+      r.extend(slab_bounds[i]), nr += sb.exit[axis][i];
       right_bounds[i] = r, right_count[i] = nr;
     }
     // Sweep from the left: bounds and entry counts of slabs [0, i), pricing plane i.
     Box3f l;
     uint32_t nl = 0;
     for (int i = 1; i < bins; ++i) {
-      l.extend(sb.bounds[axis][i - 1]), nl += sb.entry[axis][i - 1];
+      l.extend(slab_bounds[i - 1]), nl += sb.entry[axis][i - 1];
       const float pos = slabs[axis].plane(i);
       if (!(bounds.lower[axis] < pos && pos < bounds.upper[axis])) continue;
       consider(best, axis, pos, intersection(l, bounds), nl, intersection(right_bounds[i], bounds),

@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -139,21 +141,44 @@ TEST_CASE("ch05: chopping at many planes gives each slab the bounds of clipping 
     std::vector<float> planes(size_t(1 + trial % 8));
     for (float& p : planes) p = box.lower[axis] + (box.upper[axis] - box.lower[axis]) * (u(gen) + 1.0f) / 3.0f;
     std::sort(planes.begin(), planes.end());
-    std::vector<Box3f> out(planes.size() + 1);
+    std::vector<ExactBox> out(planes.size() + 1);
     chop_triangle(a, b, c, box, axis, planes, out);
     for (size_t i = 0; i < out.size(); ++i) {
       Box3f slab = box;
       if (i > 0) slab.lower[axis] = planes[i - 1];
       if (i < planes.size()) slab.upper[axis] = planes[i];
-      const Box3f expected = clip_triangle(a, b, c, slab);
-      CHECK(out[i].empty() == expected.empty());
+      const Box3f expected = clip_triangle(a, b, c, slab), chopped = out[i].rounded();
+      CHECK(chopped.empty() == expected.empty());
       if (!expected.empty()) {
         ++pieces;
-        CHECK(same(out[i], expected));
-        CHECK(slab.contains(out[i]));
+        CHECK(same(chopped, expected));
+        CHECK(slab.contains(chopped));
       }
     }
   }
   CHECK(pieces > 200);
 }
 // [ch05-test-chop]
+
+TEST_CASE("ch05: rounding a union of exact boxes is the union of their roundings") {
+  // What lets a spatial bin round once for all its pieces: rounding outwards is monotone, so it
+  // commutes with the minimum and maximum of a union and with keeping a box inside a float box.
+  std::mt19937 gen(505);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  std::uniform_int_distribution<int> count(1, 6);
+  for (int trial = 0; trial < 500; ++trial) {
+    const Box3f keep(Vec3f(float(u(gen)) - 3.0f), Vec3f(float(u(gen)) + 3.0f));
+    ExactBox all;
+    Box3f each;
+    for (int piece = count(gen); piece > 0; --piece) {
+      ExactBox b;
+      b.extend(std::array<double, 3>{u(gen), u(gen), u(gen)});
+      b.extend(std::array<double, 3>{u(gen) * 1e-30, u(gen), -0.0});  // tiny values, a negative zero
+      b.clamp_to(keep);
+      all.extend(b);
+      each.extend(b.rounded());
+    }
+    const Box3f once = all.rounded();
+    CHECK(std::memcmp(&once, &each, sizeof(Box3f)) == 0);
+  }
+}
