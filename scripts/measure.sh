@@ -274,7 +274,7 @@ section_ch09_order() { # rays in order: a batch sorted by octant and origin cell
   have_scenes || return 0
   build ch09_bench
   RTK_SCENES=$SCENES gbench ch09_order "$B/chapters/09_inflight/ch09_bench" --benchmark_filter='^order/' \
-    --benchmark_min_time=0.2 --benchmark_counters_tabular=true
+    --benchmark_min_time=1 --benchmark_counters_tabular=true
   table ch09_order chapters/09_inflight/ch09_order.md \
     python3 chapters/09_inflight/bench_tables.py order "$OUT/ch09_order.json"
 }

@@ -127,9 +127,9 @@ void bm_order(benchmark::State& state, Scene* scene, RayKind kind) {
   const bool occlusion = kind == RayKind::shadow;
   const TraceKernels kernels = RTK_PICK_ISA(best_isa(), intersector_kernels<8>)(kTri);
   const RayOrderKey key(s.mesh.bounds());
-  // The default policy, as chapter 10 applies it: a large batch of a large structure is sorted
-  // unless it is coherent already.
-  const RayOrderPolicy policy = RayOrderPolicy::for_structure(s.bvh->bytes());
+  // The default policy, as chapter 10 applies it: a large batch is sorted unless it is
+  // coherent already.
+  const RayOrderPolicy policy;
   std::vector<Hit> hits(rays.size());
   std::vector<uint8_t> occ(rays.size());
   SortedRays sorted;

@@ -72,30 +72,19 @@ class RayOrderKey {
 
 // [ch09-order-policy]
 /// When a batch is worth sorting. A batch of fewer than `min_rays` rays is traced as given
-/// (too few rays to share much whatever their order), as is every batch of a small structure
-/// (for_structure() applies min_structure_bytes, which sort_rays cannot see), and one in which at
-/// least `coherent_fraction` of `samples` neighbouring pairs, spread over the batch, already
-/// share octant and cell: primary rays from a pinhole, shadow rays toward one light in the
-/// order of the pixels they came from.
+/// (too few rays to share much whatever their order), as is one in which at least
+/// `coherent_fraction` of `samples` neighbouring pairs, spread over the batch, already share
+/// octant and cell: primary rays from a pinhole, shadow rays toward one light in the order of
+/// the pixels they came from. The size of the structure does not enter: a tree that fits the
+/// second-level cache still gains, because neighbours in the order take the same branches
+/// (chapter 9 measures the teapot and the Cornell box).
 struct RayOrderPolicy {
   size_t min_rays = 4096;
-  /// A structure smaller than this is traced as given: its nodes stay in the second-level
-  /// cache whatever the order, and the sort (about 25 ns a ray) costs more than it saves
-  /// (chapter 9 measures it: the teapot's 0.4 MB tree loses, the 4 MB trees gain).
-  size_t min_structure_bytes = size_t(1) << 20;
   size_t samples = 1024;
   double coherent_fraction = 0.5;
   /// Sorting changes nothing but the order of the work, never an answer; `always` sorts
   /// whatever the batch looks like, `never` traces every batch as given.
   enum class Mode { automatic, always, never } mode = Mode::automatic;
-
-  /// The policy for batches of a structure of `bytes` bytes: `mode`, except that automatic
-  /// becomes never below min_structure_bytes.
-  static RayOrderPolicy for_structure(size_t bytes, Mode mode = Mode::automatic) {
-    RayOrderPolicy policy;
-    policy.mode = mode == Mode::automatic && bytes < policy.min_structure_bytes ? Mode::never : mode;
-    return policy;
-  }
 };
 // [ch09-order-policy]
 

@@ -234,7 +234,7 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
 
 void Accel::choose_order(const Box3f& scene, RayOrderPolicy::Mode mode) {
   order_key_ = RayOrderKey(scene);
-  order_policy_ = RayOrderPolicy::for_structure(info_.bytes, mode);
+  order_policy_.mode = mode;
 }
 
 Accel::~Accel() = default;

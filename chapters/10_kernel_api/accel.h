@@ -120,7 +120,7 @@ class Accel {
 
  private:
   /// Sort keys over the scene's box `scene` (both positions for motion), and when a batch is
-  /// sorted: as `mode` says, except that a small structure is never sorted automatically.
+  /// sorted: as `mode` says.
   void choose_order(const Box3f& scene, RayOrderPolicy::Mode mode);
 
   AccelInfo info_;
