@@ -76,8 +76,7 @@ class RayOrderKey {
 /// `coherent_fraction` of `samples` neighbouring pairs, spread over the batch, already share
 /// octant and cell: primary rays from a pinhole, shadow rays toward one light in the order of
 /// the pixels they came from. The size of the structure does not enter: a tree that fits the
-/// second-level cache still gains, because neighbours in the order take the same branches
-/// (chapter 9 measures the teapot and the Cornell box).
+/// second-level cache gains too (chapter 9 measures the teapot and the Cornell box).
 struct RayOrderPolicy {
   size_t min_rays = 4096;
   size_t samples = 1024;
