@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "01_base/block_cache.h"
+
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -40,19 +42,42 @@ inline void advise_huge_pages(void* p, std::size_t bytes) {
 }
 // [ch01-huge-pages]
 
+/// The bytes aligned_malloc() takes for a block of `bytes`: large blocks are rounded up to whole
+/// huge pages, so that arrays of nearly the same size share a size in the block cache.
+inline std::size_t allocation_bytes(std::size_t bytes) {
+  if (bytes == 0) return 1;
+  return bytes >= kHugePageBytes ? (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes
+                                 : bytes;
+}
+
+/// Whether a block goes through the block cache: 2 MB or more, aligned to 2 MB, no more.
+inline bool is_cached_block(std::size_t size, std::size_t alignment) {
+  return size >= kHugePageBytes && alignment == kHugePageBytes;
+}
+
+// [ch01-aligned-malloc]
 /// Allocates `bytes` aligned to `alignment` (a power of two; 2 MB and huge pages for blocks of
-/// 2 MB or more) through the aligned operator new, so that a program that counts its
-/// allocations there sees these too; throws std::bad_alloc on failure.
+/// 2 MB or more), taking a large block from the block cache where it holds one of the size and
+/// otherwise from the aligned operator new, so that a program that counts its allocations there
+/// sees these too; throws std::bad_alloc on failure.
 inline void* aligned_malloc(std::size_t bytes, std::size_t alignment) {
   alignment = allocation_alignment(bytes, alignment);
-  void* p = ::operator new(bytes == 0 ? 1 : bytes, std::align_val_t(alignment));
-  advise_huge_pages(p, bytes);
+  const std::size_t size = allocation_bytes(bytes);
+  if (is_cached_block(size, alignment))
+    if (void* p = take_cached_block(size)) return p;  // mapped and advised already
+  void* p = ::operator new(size, std::align_val_t(alignment));
+  advise_huge_pages(p, size);
   return p;
 }
-/// Frees what aligned_malloc(bytes, alignment) returned.
+/// Frees what aligned_malloc(bytes, alignment) returned: a large block to the block cache.
 inline void aligned_free(void* p, std::size_t bytes, std::size_t alignment) {
-  ::operator delete(p, std::align_val_t(allocation_alignment(bytes, alignment)));
+  if (!p) return;
+  alignment = allocation_alignment(bytes, alignment);
+  const std::size_t size = allocation_bytes(bytes);
+  if (is_cached_block(size, alignment)) return keep_cached_block(p, size);
+  ::operator delete(p, std::align_val_t(alignment));
 }
+// [ch01-aligned-malloc]
 
 /// A standard allocator with a fixed alignment, for std::vector of SIMD-loaded data.
 template <class T, std::size_t Alignment = 64>

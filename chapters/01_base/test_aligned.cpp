@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <cstring>
+#include <thread>
+#include <vector>
 
 #include "01_base/aligned.h"
 
@@ -25,3 +27,67 @@ TEST_CASE("ch01: large blocks are aligned for huge pages, small ones as asked") 
   CHECK(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePageBytes == 0);
 }
 // [ch01-test-huge-pages]
+
+// [ch01-test-block-cache]
+TEST_CASE("ch01: a freed large block is handed out again, and the cache stays within its cap") {
+  release_cached_blocks();
+  REQUIRE(cached_block_bytes() == 0);
+  const std::size_t bytes = 3 * kHugePageBytes + 100;  // rounded up to four huge pages
+  void* first = aligned_malloc(bytes, 64);
+  std::memset(first, 7, bytes);
+  aligned_free(first, bytes, 64);
+  CHECK(cached_block_bytes() == 4 * kHugePageBytes);
+  void* other_size = aligned_malloc(kHugePageBytes, 64);  // a size the cache does not hold
+  CHECK(other_size != first);
+  void* again = aligned_malloc(bytes - 50, 64);  // also four huge pages: the same block
+  CHECK(again == first);
+  CHECK(cached_block_bytes() == 0);
+  aligned_free(again, bytes - 50, 64);
+  aligned_free(other_size, kHugePageBytes, 64);
+  CHECK(cached_block_bytes() == 5 * kHugePageBytes);
+
+  // Small blocks, and blocks asked with a larger alignment, never go to the cache.
+  void* small = aligned_malloc(4096, 64);
+  aligned_free(small, 4096, 64);
+  void* wide = aligned_malloc(kHugePageBytes, 4 * kHugePageBytes);
+  aligned_free(wide, kHugePageBytes, 4 * kHugePageBytes);
+  CHECK(cached_block_bytes() == 5 * kHugePageBytes);
+
+  // Freeing more than the cap keeps the most recently freed blocks, within the cap.
+  const std::size_t block = 8 * kHugePageBytes;
+  std::vector<void*> blocks;
+  for (std::size_t i = 0; i < kBlockCacheBytes / block + 3; ++i) blocks.push_back(aligned_malloc(block, 64));
+  for (void* p : blocks) aligned_free(p, block, 64);
+  CHECK(cached_block_bytes() == kBlockCacheBytes / block * block);
+  CHECK(aligned_malloc(block, 64) == blocks.back());  // the newest is served first
+  aligned_free(blocks.back(), block, 64);
+
+  // A block larger than the cap is freed at once.
+  void* huge = aligned_malloc(kBlockCacheBytes + 1, 64);
+  const std::size_t before = cached_block_bytes();
+  aligned_free(huge, kBlockCacheBytes + 1, 64);
+  CHECK(cached_block_bytes() == before);
+
+  release_cached_blocks();
+  CHECK(cached_block_bytes() == 0);
+}
+
+TEST_CASE("ch01: the block cache serves many threads at once") {
+  release_cached_blocks();
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([t] {
+      const std::size_t bytes = std::size_t(t + 1) * kHugePageBytes;
+      for (int round = 0; round < 50; ++round) {
+        auto* p = static_cast<unsigned char*>(aligned_malloc(bytes, 64));
+        p[0] = p[bytes - 1] = static_cast<unsigned char>(round);  // owned by this thread alone
+        aligned_free(p, bytes, 64);
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  CHECK(cached_block_bytes() <= kBlockCacheBytes);
+  CHECK(cached_block_bytes() == 10 * kHugePageBytes);  // one block of each thread's size
+  release_cached_blocks();
+}
+// [ch01-test-block-cache]
