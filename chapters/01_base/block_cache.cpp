@@ -9,29 +9,12 @@
 
 #include "01_base/aligned.h"
 
-#if defined(__SANITIZE_ADDRESS__)
+// A cached block is freed memory: under AddressSanitizer it is poisoned while it waits, so
+// that a use after aligned_free() is still reported (the macros do nothing in other builds).
 #include <sanitizer/asan_interface.h>
-#endif
 
 namespace rtk {
 namespace {
-
-// A cached block is freed memory: under AddressSanitizer it is poisoned while it waits, so
-// that a use after aligned_free() is still reported.
-void mark_freed(void* p, std::size_t bytes) {
-#if defined(__SANITIZE_ADDRESS__)
-  ASAN_POISON_MEMORY_REGION(p, bytes);
-#else
-  (void)p, (void)bytes;
-#endif
-}
-void mark_allocated(void* p, std::size_t bytes) {
-#if defined(__SANITIZE_ADDRESS__)
-  ASAN_UNPOISON_MEMORY_REGION(p, bytes);
-#else
-  (void)p, (void)bytes;
-#endif
-}
 
 struct Block {
   void* p;
@@ -39,7 +22,7 @@ struct Block {
 };
 
 void free_block(const Block& b) {
-  mark_allocated(b.p, b.bytes);
+  ASAN_UNPOISON_MEMORY_REGION(b.p, b.bytes);
   ::operator delete(b.p, std::align_val_t(kHugePageBytes));
 }
 
@@ -68,7 +51,7 @@ void* take_cached_block(std::size_t bytes) {
     void* p = c.blocks[i].p;
     c.blocks.erase(c.blocks.begin() + std::ptrdiff_t(i));
     c.bytes -= bytes;
-    mark_allocated(p, bytes);
+    ASAN_UNPOISON_MEMORY_REGION(p, bytes);
     return p;
   }
   return nullptr;
@@ -76,32 +59,26 @@ void* take_cached_block(std::size_t bytes) {
 
 void keep_cached_block(void* p, std::size_t bytes) {
   if (bytes > kBlockCacheBytes) return free_block({p, bytes});
-  std::vector<Block> evicted;
-  evicted.reserve(kBlockCacheBytes / kHugePageBytes);  // no allocation under the lock
-  {
-    BlockCache& c = cache();
-    std::lock_guard<std::mutex> lock(c.mutex);
-    std::size_t oldest = 0;
-    while (c.bytes + bytes > kBlockCacheBytes) c.bytes -= c.blocks[oldest++].bytes;
-    evicted.assign(c.blocks.begin(), c.blocks.begin() + std::ptrdiff_t(oldest));
-    c.blocks.erase(c.blocks.begin(), c.blocks.begin() + std::ptrdiff_t(oldest));
-    mark_freed(p, bytes);
-    c.blocks.push_back({p, bytes});
-    c.bytes += bytes;
+  BlockCache& c = cache();
+  std::lock_guard<std::mutex> lock(c.mutex);
+  std::size_t oldest = 0;  // push out the blocks freed longest ago until this one fits
+  while (c.bytes + bytes > kBlockCacheBytes) {
+    c.bytes -= c.blocks[oldest].bytes;
+    free_block(c.blocks[oldest++]);
   }
-  for (const Block& b : evicted) free_block(b);  // outside the lock: unmapping takes time
+  c.blocks.erase(c.blocks.begin(), c.blocks.begin() + std::ptrdiff_t(oldest));
+  ASAN_POISON_MEMORY_REGION(p, bytes);
+  c.blocks.push_back({p, bytes});
+  c.bytes += bytes;
 }
 // [ch01-block-cache-keep]
 
 void release_cached_blocks() {
-  std::vector<Block> all;
-  {
-    BlockCache& c = cache();
-    std::lock_guard<std::mutex> lock(c.mutex);
-    all.swap(c.blocks);
-    c.bytes = 0;
-  }
-  for (const Block& b : all) free_block(b);
+  BlockCache& c = cache();
+  std::lock_guard<std::mutex> lock(c.mutex);
+  for (const Block& b : c.blocks) free_block(b);
+  c.blocks.clear();  // keeps the reserved room
+  c.bytes = 0;
 }
 
 std::size_t cached_block_bytes() {
