@@ -26,8 +26,8 @@ namespace rtk::RTK_ISA {
 /// widens by four units in the last place of 1, a little more than 2 g.
 inline constexpr float kExitWidening = 4 * 0x1p-23f;
 
-/// `exit` moved away from zero by kExitWidening: larger ahead of the origin, more negative
-/// behind it; infinities stay infinite and NaN stays NaN.
+/// `exit` raised by kExitWidening of its magnitude: larger ahead of the origin, nearer to it
+/// behind; infinities stay infinite and NaN stays NaN.
 template <int N>
 RTK_INLINE vfloat<N> widen_exit(vfloat<N> exit) {
   return max(exit * vfloat<N>(1.0f + kExitWidening), exit * vfloat<N>(1.0f - kExitWidening));
@@ -45,5 +45,26 @@ RTK_INLINE float conservative_tfar(float tfar, bool widen = true) {
   return widened < kMax ? widened : kMax;
 }
 // [ch02-conservative-exit]
+
+// [ch02-folded-widening]
+/// Where a box test widens its exits. `after_min` is widen_exit() on the nearest of the slab
+/// exits, three operations at every node on the path a ray waits along. `folded` does the same
+/// once per ray: the far planes' distances are computed with -1/dir already widened
+/// (folded_reciprocal), so they come out widened, and a node's test is left with the
+/// subtractions, products, minima and maxima of the exact one. It is valid only for a ray whose
+/// interval starts at or after its origin (tnear >= 0): such a ray keeps a box only where an
+/// exit is at least tnear, so only exits of 0 and above matter, and for them a larger factor is
+/// a larger exit. Behind the origin the same factor would lower an exit, so a ray with
+/// tnear < 0 is widened after the minimum. `none` is the exact slab test, for measurements.
+enum class ExitWidening { none, after_min, folded };
+
+/// -1/dir for the far planes of a ray whose exits are widened `folded`: the same bound as
+/// widen_exit, applied before the product instead of after it. The product that makes a slab
+/// exit now rounds four times (the subtraction, the reciprocal, this product, the last one)
+/// instead of three, each by at most u = 2^-24, and the entry it is compared with three times:
+/// with the factor 1 + 8u, (1 - u)^4 (1 + 8u) >= (1 + u)^3, so an exit equal to an entry in
+/// exact arithmetic is never rounded below it, as with widen_exit.
+RTK_INLINE float folded_reciprocal(float neg_rdir) { return neg_rdir * (1.0f + kExitWidening); }
+// [ch02-folded-widening]
 
 }  // namespace rtk::RTK_ISA

@@ -32,6 +32,9 @@ struct BvhNRay {
   /// -1/dir: the box test computes (org - plane) * (-1/dir), which equals (plane - org) / dir
   /// and lets the compiler read the plane straight from memory into the subtraction.
   vfloat<N> neg_rdir_x, neg_rdir_y, neg_rdir_z;
+  /// -1/dir for the far planes: neg_rdir, or for exits widened `folded` (conservative_exit.h)
+  /// neg_rdir widened, which makes every exit conservative at no cost per node.
+  vfloat<N> far_rdir_x, far_rdir_y, far_rdir_z;
   /// The ray's interval, clamped to finite values: unused child slots have all bounds at +inf,
   /// and only a finite interval keeps such a box out whatever the direction. tfar is widened
   /// like a slab exit (conservative_tfar).
@@ -40,9 +43,10 @@ struct BvhNRay {
   size_t near_x, near_y, near_z, far_x, far_y, far_z;
 };
 
-/// Prepares a valid ray for the N-wide box test, once per ray.
+/// Prepares a valid ray for the N-wide box test, once per ray, its exits widened as `widening`
+/// says (`folded` only for a ray with tnear >= 0, see exit_widening_for).
 template <int N>
-RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, bool conservative = true) {
+RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = ExitWidening::after_min) {
   constexpr float kMax = std::numeric_limits<float>::max();
   BvhNRay<N> r;
   r.org_x = vfloat<N>(ray.org.x), r.org_y = vfloat<N>(ray.org.y), r.org_z = vfloat<N>(ray.org.z);
@@ -50,8 +54,11 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, bool conservative = true) {
   // distances computed with them agree.
   const Vec3f rdir{1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
   r.neg_rdir_x = vfloat<N>(-rdir.x), r.neg_rdir_y = vfloat<N>(-rdir.y), r.neg_rdir_z = vfloat<N>(-rdir.z);
+  const bool folded = widening == ExitWidening::folded;
+  auto far = [folded](float neg_rdir) { return vfloat<N>(folded ? folded_reciprocal(neg_rdir) : neg_rdir); };
+  r.far_rdir_x = far(-rdir.x), r.far_rdir_y = far(-rdir.y), r.far_rdir_z = far(-rdir.z);
   r.tnear = vfloat<N>(ray.tnear > -kMax ? ray.tnear : -kMax);
-  r.tfar = vfloat<N>(conservative_tfar(ray.tfar, conservative));
+  r.tfar = vfloat<N>(conservative_tfar(ray.tfar, widening != ExitWidening::none));
   // [ch03-near-far-offsets]
   // Rows are N floats; the two rows of an axis are adjacent, lower first.
   constexpr size_t kRow = sizeof(float) * N;
@@ -68,9 +75,10 @@ RTK_INLINE void shorten(BvhNRay<N>& r, float tfar, bool conservative = true) {
   r.tfar = vfloat<N>(conservative_tfar(tfar, conservative));
 }
 
-/// Tests the ray against the N children of a node. Returns the hit mask (bit i for child i)
-/// and leaves each child's entry distance in `dist`.
-template <int N, Tricks T>
+/// Tests the ray against the N children of a node, its exits widened as W says (the ray was
+/// made for W). Returns the hit mask (bit i for child i) and leaves each child's entry distance
+/// in `dist`.
+template <int N, Tricks T, ExitWidening W>
 RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vfloat<N>& dist) {
   vfloat<N> nx, ny, nz, fx, fy, fz;
   if constexpr (T.near_far_by_sign) {
@@ -80,11 +88,12 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
     nx = (r.org_x - row(r.near_x)) * r.neg_rdir_x;
     ny = (r.org_y - row(r.near_y)) * r.neg_rdir_y;
     nz = (r.org_z - row(r.near_z)) * r.neg_rdir_z;
-    fx = (r.org_x - row(r.far_x)) * r.neg_rdir_x;
-    fy = (r.org_y - row(r.far_y)) * r.neg_rdir_y;
-    fz = (r.org_z - row(r.far_z)) * r.neg_rdir_z;
+    fx = (r.org_x - row(r.far_x)) * r.far_rdir_x;
+    fy = (r.org_y - row(r.far_y)) * r.far_rdir_y;
+    fz = (r.org_z - row(r.far_z)) * r.far_rdir_z;
     // [ch03-box-sign]
   } else {
+    static_assert(W != ExitWidening::folded, "folding needs to know the far planes");
     // [ch03-box-minmax]
     const vfloat<N> lx = (r.org_x - vfloat<N>::load(node.lower_x)) * r.neg_rdir_x;
     const vfloat<N> ux = (r.org_x - vfloat<N>::load(node.upper_x)) * r.neg_rdir_x;
@@ -100,12 +109,13 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
   // [ch03-box-combine]
   // The ray's own limits come last: where a slab gives 0 * inf = NaN (a ray lying in the
   // plane of a face), min and max return their second operand and the NaN drops out.
-  // The slabs' exit is widened by its rounding bound before the ray's own (already widened)
-  // limit joins it, so that rounding never separates an entry from an equal exit.
+  // The slabs' exit is widened by its rounding bound (already, when it is folded into the ray)
+  // before the ray's own (already widened) limit joins it, so that rounding never separates an
+  // entry from an equal exit.
   dist = max(max(nx, ny), max(nz, r.tnear));
   vfloat<N> exit;
-  if constexpr (T.conservative_exits) exit = min(widen_exit(min(min(fx, fy), fz)), r.tfar);
-  else exit = min(min(fx, fy), min(fz, r.tfar));
+  if constexpr (W == ExitWidening::after_min) exit = min(widen_exit(min(min(fx, fy), fz)), r.tfar);
+  else exit = min(min(fx, fy), min(fz, r.tfar));  // folded into far_rdir, or none
   return movemask(dist <= exit);
   // [ch03-box-combine]
 }
@@ -261,14 +271,13 @@ struct StatsCounter<true> {
   RTK_INLINE void cull() { ++s.culled; }
 };
 
-/// Traces one valid ray through the subtree of `from` (bvh.root for the whole BVH) of an N-wide
-/// BVH. For a closest hit (kOcclusion false) it returns whether it found a hit that beats `hit`
-/// (chapter 2's rule) and writes it there; for occlusion, whether anything blocks.
-template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats>
-bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit, StatsCounter<kStats>& stats) {
+/// Traces one valid ray through the subtree of `from` with its box tests' exits widened as W
+/// says (traverse_bvhn below chooses W).
+template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats, ExitWidening W>
+bool traverse_bvhn_widened(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit, StatsCounter<kStats>& stats) {
   const typename Leaf::Precalc pre(ray);
-  constexpr bool kWiden = T.conservative_exits;
-  BvhNRay<N> r = make_bvhn_ray<N>(ray, kWiden);
+  constexpr bool kWiden = W != ExitWidening::none;
+  BvhNRay<N> r = make_bvhn_ray<N>(ray, W);
   float tfar = ray.tfar;
   // Cull at pop needs shrinking hits; an occlusion ray stops at its first hit. Pushed entries
   // beyond the widened far end are culled (conservative_exit.h).
@@ -290,7 +299,7 @@ bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit, S
       BvhStackEntry next;
       if constexpr (T.early_pop) next = sp[-1];
       vfloat<N> dist;
-      uint32_t mask = intersect_node<N, T>(node, r, dist);
+      uint32_t mask = intersect_node<N, T, W>(node, r, dist);
       stats.node(mask);
 
       // 0 children hit.
@@ -342,6 +351,27 @@ bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit, S
   }
   return found;
 }
+
+// [ch03-exit-widening]
+/// Traces one valid ray through the subtree of `from` (bvh.root for the whole BVH) of an N-wide
+/// BVH. For a closest hit (kOcclusion false) it returns whether it found a hit that beats `hit`
+/// (chapter 2's rule) and writes it there; for occlusion, whether anything blocks. The exits are
+/// widened once per ray, folded into it, wherever chapter 2 allows (a ray with tnear >= 0, and
+/// the far planes known by the direction's signs); otherwise at every node.
+template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats>
+RTK_INLINE bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit,
+                              StatsCounter<kStats>& stats) {
+  using enum ExitWidening;
+  if constexpr (!T.conservative_exits)
+    return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, none>(bvh, from, ray, hit, stats);
+  else if constexpr (!T.near_far_by_sign)
+    return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, after_min>(bvh, from, ray, hit, stats);
+  else if (ray.tnear >= 0.0f)
+    return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, folded>(bvh, from, ray, hit, stats);
+  else
+    return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, after_min>(bvh, from, ray, hit, stats);
+}
+// [ch03-exit-widening]
 
 /// Traces rays[i] into hits[i] with one trick configuration; statistics go to `stats` when
 /// kStats is set. Invalid rays miss without traversal.

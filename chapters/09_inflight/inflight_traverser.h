@@ -51,7 +51,7 @@ RTK_INLINE void start_ray(InflightRay<N, Leaf>& s, const BVHN<N>& bvh, const std
                           const Ray& ray, size_t index) {
   static_assert(std::is_trivially_destructible_v<typename Leaf::Precalc>);
   new (s.pre_bytes) typename Leaf::Precalc(ray);
-  s.r = make_bvhn_ray<N>(ray, true);
+  s.r = make_bvhn_ray<N>(ray, ExitWidening::after_min);
   s.tfar = ray.tfar;
   s.cull = conservative_tfar(s.tfar, true);
   s.index = index;
@@ -78,7 +78,7 @@ RTK_INLINE bool visit(InflightRay<N, Leaf>& s, const BVHN<N>& bvh, const std::by
     const NodeN<N>& node = bvh.node(s.cur);
     const BvhStackEntry next = sp[-1];  // early pop
     vfloat<N> dist;
-    const uint32_t mask = intersect_node<N, T>(node, s.r, dist);
+    const uint32_t mask = intersect_node<N, T, ExitWidening::after_min>(node, s.r, dist);
     if (mask != 0) {
       // The children the ray enters are all asked for; the one it visits next is among them.
       if constexpr (kPrefetch)
