@@ -44,7 +44,7 @@ struct BvhNRay {
 };
 
 /// Prepares a valid ray for the N-wide box test, once per ray, its exits widened as `widening`
-/// says (`folded` only for a ray with tnear >= 0, see exit_widening_for).
+/// says (`folded` only for a ray with tnear >= 0, as traverse_bvhn chooses).
 template <int N>
 RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = ExitWidening::after_min) {
   constexpr float kMax = std::numeric_limits<float>::max();
