@@ -97,7 +97,8 @@ RTK_INLINE RayPacket<P> make_packet(const Ray* rays, int count, uint32_t octant)
 
 // [ch09-packet-node]
 /// Tests the packet against child `c` of a node: the lanes that enter its box (in the mask),
-/// with chapter 3's intersect_node arithmetic lane for lane, and each lane's entry distance in
+/// with chapter 3's intersect_node arithmetic lane for lane (its exits widened after the
+/// minimum, as chapter 3's are for a ray with tnear < 0), and each lane's entry distance in
 /// `entry` (+inf for the lanes that miss).
 template <int P, int N>
 RTK_INLINE uint32_t enter_child(const NodeN<N>& node, int c, const RayPacket<P>& p, vfloat<P>& entry) {
