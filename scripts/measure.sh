@@ -159,7 +159,10 @@ section_ch04_occluders() { # SAH: the order of children for shadow rays, visits 
 
 section_ch04_growth() { # SAH: build time and peak memory per triangle at 1M, 4M and 16M triangles; the chart
   build ch04_bench
-  RTK_BENCH_GROWTH=1 gbench ch04_growth "$B/chapters/04_sah/ch04_bench" --benchmark_filter='^growth/'
+  # Five builds of each size, the fastest charted: the first build of a size maps its memory
+  # afresh, and what a fresh page costs on a shared machine moves from one build to the next.
+  RTK_BENCH_GROWTH=1 gbench ch04_growth "$B/chapters/04_sah/ch04_bench" --benchmark_filter='^growth/' \
+    --benchmark_repetitions=5
   python3 chapters/04_sah/figure/growth_chart.py "$OUT/ch04_growth.json" chapters/04_sah/ch04_growth.tsv
   plot chapters/04_sah/figure/growth.gp chapters/04_sah/ch04_growth
 }
@@ -389,7 +392,7 @@ section_ch16() { # viewer: the window's picture under Xvfb, and frame times at t
     python3 chapters/16_viewer/figure/frames_table.py "$OUT/ch16_frames_512.txt" "$OUT/ch16_frames_128.txt"
 }
 
-section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then SSE4.2) and the renderer on both
+section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then SSE4.2) and the renderer on both; then embree_build
   BUILD_DIR=$B RTK_SCENES= bash bench/embree/make_table.sh
   BUILD_DIR=$B RESULTS=bench/embree/results_sse4.md bash bench/embree/make_table.sh --embree-isa=sse4.2 \
     --benchmark_filter='(/embree|rtk:sse4:|rtk:bvh4.objectsplit:triangle4.moeller)'
@@ -400,6 +403,37 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
     python3 bench/embree/summary.py standing "$B/bench/results.json" "$B/bench/results_sse4.json"
   table embree book/embree_build.md python3 bench/embree/summary.py build "$B/bench/results.json"
   table embree book/embree_render.md python3 bench/embree/summary.py render "$OUT/embree_render.json"
+  section_embree_build
+}
+
+section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
+  build bench_embree
+  local meshes="" f t size round runs=()
+  if [ -d "$SCENES" ]; then
+    while read -r f; do
+      [ -f "$SCENES/$f" ] && meshes="$meshes${meshes:+,}$SCENES/$f"
+    done < bench/embree/meshes.txt
+  else
+    meshes=$SCENES
+  fi
+  # Two rounds, each on one thread and then on two: build times of the large scenes move with
+  # the price of fresh memory on a shared machine, and the table gives the range.
+  for round in 1 2; do
+    for t in 1 2; do
+      RTK_SCENES=$meshes gbench embree_build_meshes_${t}_$round "$B/bench/bench_embree" --builds-only \
+        --procedural=0 --threads=$t --benchmark_min_time=1
+      runs+=("$OUT/embree_build_meshes_${t}_$round.json")
+      # --size scales the generated terrain (131,072 triangles) by 8, 32 and 128; the larger the
+      # build, the longer each run, so that every pair is timed at least three times.
+      for size in 8 32 128; do
+        RTK_SCENES= gbench embree_build_terrain${size}_${t}_$round "$B/bench/bench_embree" --builds-only \
+          --procedural=terrain --size=$size --threads=$t --benchmark_min_time=$((size / 8 + 2))
+        runs+=("$OUT/embree_build_terrain${size}_${t}_$round.json")
+      done
+    done
+  done
+  table embree_build book/embree_build_threads.md python3 bench/embree/summary.py threads "${runs[@]}"
+  cat book/embree_build_threads.md
 }
 
 # A full run, in the book's order. A section may run parts that are sections of their own
@@ -407,7 +441,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 # only when named: it builds the path loop of an earlier commit to compare with.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
-       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop)
+       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build)
 
 # --- the machine ------------------------------------------------------------------------------
 

@@ -3,8 +3,9 @@
 // public API, their ratio, the agreement of their answers, and build speed and memory.
 //
 //   build/bench/embree/bench_embree [--rays=N] [--threads=N] [--scenes=A.obj,B.obj|DIR]
-//                                   [--procedural=0] [--size=F] [--rtk=default|all]
-//                                   [--embree-isa=sse4.2|avx2|...] [benchmark options]
+//                                   [--procedural=0|1|NAME] [--size=F] [--rtk=default|all]
+//                                   [--embree-isa=sse4.2|avx2|...] [--builds-only]
+//                                   [benchmark options]
 //   RTK_SCENES=../shared/scenes/bunny_stanford_full build/bench/embree/bench_embree
 //
 // Benchmark names: build/SCENE/BUILDER and trace/SCENE/KIND/TRACER, where BUILDER is "embree"
@@ -17,7 +18,10 @@
 // is measured in pairs: every iteration of an RTK benchmark runs Embree's build or trace of
 // the same input too, right before RTK's, and the ratio is that of the two sums of times. The
 // machine is shared and noisy, and whatever slows it at a given moment then slows both.
-// bench/embree/make_table.sh turns the JSON output into the markdown table.
+// bench/embree/make_table.sh turns the JSON output into the markdown table. --builds-only runs
+// nothing but RTK's default build paired with Embree's, per scene (scripts/measure.sh
+// embree_build runs it on one and two threads, on the real meshes and on terrains of 1M, 4M
+// and 16M triangles).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -46,10 +50,11 @@ using namespace rtk;
 struct Settings {
   size_t rays = size_t(1) << 18;
   int threads = 1;  // build threads of both; tracing is always one thread
-  bool procedural = true;
+  std::string procedural = "1";  // "1": every generated scene, "0": none, else only the one named
   bool all_rtk = false;
   std::string embree_isa;  // empty: Embree's best for the CPU; else its max_isa option
   double size = 1.0;       // scale of the procedural scenes' triangle counts
+  bool builds_only = false;  // only RTK's default build, paired with Embree's
 
   std::vector<std::filesystem::path> scene_files;
 };
@@ -167,12 +172,13 @@ double paired_ratio(benchmark::State& state, const Embree& embree, const Rtk& rt
 // [bench-paired]
 
 void build_rtk(benchmark::State& state, Scene* s, AccelConfig config) {
-  size_t bytes = 0;
+  size_t bytes = 0, embree_bytes = 0;
   state.counters["rtk_vs_embree"] = paired_ratio(
-      state, [&] { EmbreeScene scene(s->mesh, settings.threads); },
+      state, [&] { embree_bytes = EmbreeScene(s->mesh, settings.threads).total_bytes(); },
       [&] { bytes = Accel(s->mesh, config).info().bytes; });
   set_rate(state, double(s->mesh.size()), "Mtris_per_s");
   state.counters["bytes_per_tri"] = double(bytes) / double(s->mesh.size());
+  state.counters["embree_bytes_per_tri"] = double(embree_bytes) / double(s->mesh.size());
   state.counters["triangles"] = double(s->mesh.size());
   state.counters["threads"] = settings.threads;
 }
@@ -286,10 +292,11 @@ void parse_settings(int& argc, char** argv) {
     if (const char* v = value("--rays=")) settings.rays = std::strtoull(v, nullptr, 10);
     else if (const char* v = value("--threads=")) settings.threads = std::atoi(v);
     else if (const char* v = value("--scenes=")) add_scene_files(v);
-    else if (const char* v = value("--procedural=")) settings.procedural = std::atoi(v) != 0;
+    else if (const char* v = value("--procedural=")) settings.procedural = v;
     else if (const char* v = value("--rtk=")) settings.all_rtk = std::string(v) == "all";
     else if (const char* v = value("--embree-isa=")) settings.embree_isa = v;
     else if (const char* v = value("--size=")) settings.size = std::strtod(v, nullptr);
+    else if (arg == "--builds-only") settings.builds_only = true;
     else argv[kept++] = argv[i];
   }
   argc = kept;
@@ -309,14 +316,15 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
-  if (settings.procedural) {
+  {
     // --size=F scales every procedural scene's triangle count by about F (1: the default sizes).
     const double f = settings.size;
     auto scaled = [f](double n) { return std::max(2, int(std::lround(n))); };
-    add_scene("sphere", test::make_sphere(scaled(256 * std::sqrt(f)), scaled(512 * std::sqrt(f))));
-    add_scene("soup", test::make_random_soup(scaled(100000 * f), 1, float(0.05 / std::sqrt(f))));
-    add_scene("terrain", test::make_terrain(scaled(256 * std::sqrt(f)), 1));
-    add_scene("slivers", test::make_slivers(scaled(2000 * f), 1));
+    auto wanted = [](const char* name) { return settings.procedural == "1" || settings.procedural == name; };
+    if (wanted("sphere")) add_scene("sphere", test::make_sphere(scaled(256 * std::sqrt(f)), scaled(512 * std::sqrt(f))));
+    if (wanted("soup")) add_scene("soup", test::make_random_soup(scaled(100000 * f), 1, float(0.05 / std::sqrt(f))));
+    if (wanted("terrain")) add_scene("terrain", test::make_terrain(scaled(256 * std::sqrt(f)), 1));
+    if (wanted("slivers")) add_scene("slivers", test::make_slivers(scaled(2000 * f), 1));
   }
   for (const auto& file : settings.scene_files) {
     try {
@@ -329,6 +337,14 @@ int main(int argc, char** argv) {
   const std::vector<AccelConfig> configs = rtk_configs();
   for (auto& owned : scenes) {
     Scene* s = owned.get();
+    if (settings.builds_only) {
+      const AccelConfig c{.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads};
+      const AccelInfo info = resolve_config(c);
+      benchmark::RegisterBenchmark(("build/" + s->name + "/rtk:" + info.accel + ":" + info.tri).c_str(),
+                                   build_rtk, s, c)
+          ->UseManualTime()->Unit(benchmark::kMillisecond);
+      continue;
+    }
     benchmark::RegisterBenchmark(("build/" + s->name + "/embree").c_str(), build_embree, s)
         ->UseManualTime()->Unit(benchmark::kMillisecond);
     // The builders are not compiled per ISA: one build benchmark per structure and layout.

@@ -15,14 +15,14 @@ here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build_dir=${BUILD_DIR:-$root/build}
 cmake --build "$build_dir" --target bench_embree -j"$(nproc)"
-# The real meshes: a few of different character, when the shared scene folder is there.
+# The real meshes: a few of different character (meshes.txt), when the shared scene folder is
+# there.
 if [ -z "${RTK_SCENES:-}" ]; then
   shared="$root/../shared/scenes"
   list=""
-  for f in bunny_stanford_full/stanford-bunny.obj happy_buddha_100k/buddha.obj \
-           sponza_dabrovic/sponza.obj dragon_stanford/dragon_vrip_res3.obj teapot_newell/teapot.obj; do
+  while read -r f; do
     [ -f "$shared/$f" ] && list="$list${list:+,}$shared/$f"
-  done
+  done < "$here/meshes.txt"
   export RTK_SCENES="$list"
 fi
 results=${RESULTS:-$here/results.md}

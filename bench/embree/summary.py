@@ -5,10 +5,13 @@ bench_render_kernels write (scripts/measure.sh embree runs all three):
     python3 bench/embree/summary.py standing results.json results_sse4.json
     python3 bench/embree/summary.py build results.json
     python3 bench/embree/summary.py render embree_render.json
+    python3 bench/embree/summary.py threads embree_build_*.json
 
 `standing` gives, per RTK configuration and kind of ray, the range and median over the real
 meshes of RTK's speed as a ratio to Embree's in the same run; `build` the same for build speed
-and memory; `render` the renderer on both sets of kernels.
+and memory; `render` the renderer on both sets of kernels; `threads` RTK's default build
+against Embree's per scene on one and on two threads (runs of bench_embree --builds-only, one
+or more per thread count and scene size).
 """
 import json
 import re
@@ -103,6 +106,47 @@ def build(path):
               f"{min(mine):.0f}-{max(mine):.0f} | {min(theirs):.0f}-{max(theirs):.0f} |")
 
 
+def threads(paths):
+    """One row per scene (a terrain per size): the paired build ratio on each thread count (the
+    range over the runs), what the second thread gives each builder (from the mean rates), and
+    the bytes per triangle of both."""
+    rows = {}  # (scene, triangles) -> {threads: [benchmark of each run]}
+    for path in paths:
+        data, runs = benchmarks(path)
+        t = int(data["context"]["build_threads"])
+        for b in runs:
+            m = re.match(r"build/([^/]+)/rtk:", b["name"])
+            if m:
+                rows.setdefault((m.group(1), int(b["triangles"])), {}).setdefault(t, []).append(b)
+    counts = sorted({t for row in rows.values() for t in row})
+    if counts != [1, 2]:
+        sys.exit(f"summary.py threads: runs on 1 and 2 threads wanted, got {counts}")
+
+    def ratios(runs):
+        low, high = min(b["rtk_vs_embree"] for b in runs), max(b["rtk_vs_embree"] for b in runs)
+        return f"{low:.2f}" if f"{low:.2f}" == f"{high:.2f}" else f"{low:.2f}-{high:.2f}"
+
+    def mean(values):
+        return sum(values) / len(values)
+
+    print("| scene | triangles | RTK / Embree, 1 thread | RTK / Embree, 2 threads | "
+          "2 threads / 1: RTK | Embree | bytes/tri: RTK | Embree |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    # The real meshes first, then the generated scenes by size.
+    for scene, tris in sorted(rows, key=lambda k: (k[0] in PROCEDURAL, k[1] if k[0] in PROCEDURAL else 0)):
+        one, two = rows[(scene, tris)].get(1), rows[(scene, tris)].get(2)
+        if not one or not two:
+            continue
+        # Embree's rate in a pair: RTK's rate over the ratio (both from the same iterations).
+        rtk_rate = {t: mean([b["Mtris_per_s"] for b in runs]) for t, runs in ((1, one), (2, two))}
+        embree_rate = {t: mean([b["Mtris_per_s"] / b["rtk_vs_embree"] for b in runs])
+                       for t, runs in ((1, one), (2, two))}
+        name = f"{scene} (generated)" if scene in PROCEDURAL else scene
+        print(f"| {name} | {tris:,} | {ratios(one)} | {ratios(two)} | "
+              f"{rtk_rate[2] / rtk_rate[1]:.2f} | {embree_rate[2] / embree_rate[1]:.2f} | "
+              f"{one[0]['bytes_per_tri']:.0f} | {mean([b['embree_bytes_per_tri'] for b in one]):.0f} |")
+
+
 def render(path):
     _, runs = benchmarks(path)
     scenes = {"cornell": "Cornell box", "mesh:0": "Stanford bunny", "mesh:1": "Sponza"}
@@ -122,8 +166,11 @@ def main():
         standing(sys.argv[2:])
     elif len(sys.argv) == 3 and sys.argv[1] in ("build", "render"):
         {"build": build, "render": render}[sys.argv[1]](sys.argv[2])
+    elif len(sys.argv) >= 4 and sys.argv[1] == "threads":
+        threads(sys.argv[2:])
     else:
-        sys.exit("usage: summary.py standing RESULTS.json [SSE4.json] | build RESULTS.json | render RENDER.json")
+        sys.exit("usage: summary.py standing RESULTS.json [SSE4.json] | build RESULTS.json | "
+                 "render RENDER.json | threads BUILDS.json...")
 
 
 if __name__ == "__main__":
