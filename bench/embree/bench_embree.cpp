@@ -86,6 +86,9 @@ EmbreeScene& embree_for(Scene& s) {
   return *s.embree;
 }
 
+/// A builder's name: RTK's builders are the same for every ISA.
+std::string builder_name(const AccelInfo& info) { return "rtk:" + info.accel + ":" + info.tri; }
+
 std::string tracer_name(const AccelInfo& info) {
   return "rtk:" + std::string(isa_name(info.isa)) + ":" + info.accel + ":" + info.tri;
 }
@@ -306,6 +309,11 @@ void parse_settings(int& argc, char** argv) {
     std::fprintf(stderr, "bench_embree: --size must be a scale factor in (0, 10000]\n");
     std::exit(2);
   }
+  const char* generated[] = {"0", "1", "sphere", "soup", "terrain", "slivers"};
+  if (std::find(std::begin(generated), std::end(generated), settings.procedural) == std::end(generated)) {
+    std::fprintf(stderr, "bench_embree: --procedural must be 0, 1, sphere, soup, terrain or slivers\n");
+    std::exit(2);
+  }
   if (const char* env = std::getenv("RTK_SCENES")) add_scene_files(env);
 }
 
@@ -339,8 +347,7 @@ int main(int argc, char** argv) {
     Scene* s = owned.get();
     if (settings.builds_only) {
       const AccelConfig c{.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads};
-      const AccelInfo info = resolve_config(c);
-      benchmark::RegisterBenchmark(("build/" + s->name + "/rtk:" + info.accel + ":" + info.tri).c_str(),
+      benchmark::RegisterBenchmark(("build/" + s->name + "/" + builder_name(resolve_config(c))).c_str(),
                                    build_rtk, s, c)
           ->UseManualTime()->Unit(benchmark::kMillisecond);
       continue;
@@ -350,8 +357,7 @@ int main(int argc, char** argv) {
     // The builders are not compiled per ISA: one build benchmark per structure and layout.
     std::vector<std::string> built;
     for (const AccelConfig& c : configs) {
-      const AccelInfo info = resolve_config(c);
-      const std::string name = "rtk:" + info.accel + ":" + info.tri;
+      const std::string name = builder_name(resolve_config(c));
       if (std::find(built.begin(), built.end(), name) != built.end()) continue;
       built.push_back(name);
       benchmark::RegisterBenchmark(("build/" + s->name + "/" + name).c_str(), build_rtk, s, c)
