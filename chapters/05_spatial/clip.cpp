@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "01_base/platform.h"
 
@@ -13,31 +14,37 @@ namespace rtk {
 
 namespace {
 
-/// A polygon during clipping: a triangle clipped by six planes has at most nine vertices (each
-/// plane adds at most one).
-struct Polygon {
-  static constexpr int kMaxVertices = 10;
-  std::array<std::array<double, 3>, kMaxVertices> v;
-  int n = 0;
-};
+using Polygon = ClipPolygon;  // clip.h's, by a short name
+
+/// A side of a cut that is not wanted.
+constexpr Polygon* kNoSide = nullptr;
 
 // [ch05-clip-plane]
+/// What a side of a cut keeps of a point: a polygon the point itself, an exact box only its
+/// bounds (a piece that no later plane cuts needs nothing more).
+void add(Polygon& poly, const std::array<double, 3>& p) { poly.v[poly.n++] = p; }
+void add(ExactBox& box, const std::array<double, 3>& p) { box.extend(p); }
+
 /// Cuts `in` at the plane coordinate[axis] = d: the part below it goes to `below`, the part
-/// above it to `above` (either may be null when only one side is wanted). A vertex on the plane
-/// belongs to both. Where an edge crosses, the new vertex gets the plane's coordinate exactly,
-/// and the other two are interpolated from the edge's endpoints taken in a fixed order (lower
-/// coordinate first), so that two neighbouring clips of one edge compute the same point bit
-/// for bit; a point both sides need is computed once.
-void split_plane(const Polygon& in, int axis, double d, Polygon* below, Polygon* above) {
-  if (below) below->n = 0;
-  if (above) above->n = 0;
+/// above it to `above` (either may be null when only one side is wanted; a polygon given is
+/// emptied first, a box is extended). A vertex on the plane belongs to both. Where an edge
+/// crosses, the new vertex gets the plane's coordinate exactly, and the other two are
+/// interpolated from the edge's endpoints taken in a fixed order (lower coordinate first), so
+/// that two neighbouring clips of one edge compute the same point bit for bit; a point both
+/// sides need is computed once.
+template <class Below, class Above>
+void split_plane(const Polygon& in, int axis, double d, Below* below, Above* above) {
+  if constexpr (std::is_same_v<Below, Polygon>)
+    if (below) below->n = 0;
+  if constexpr (std::is_same_v<Above, Polygon>)
+    if (above) above->n = 0;
   for (int i = 0; i < in.n; ++i) {
     const auto& p = in.v[i];
     const auto& q = in.v[(i + 1) % in.n];
     const bool p_below = p[axis] <= d, q_below = q[axis] <= d;
     const bool p_above = p[axis] >= d, q_above = q[axis] >= d;
-    if (below && p_below) below->v[below->n++] = p;
-    if (above && p_above) above->v[above->n++] = p;
+    if (below && p_below) add(*below, p);
+    if (above && p_above) add(*above, p);
     const bool cross_below = below && p_below != q_below, cross_above = above && p_above != q_above;
     if (cross_below || cross_above) {
       const auto& s = p[axis] < q[axis] ? p : q;
@@ -47,8 +54,8 @@ void split_plane(const Polygon& in, int axis, double d, Polygon* below, Polygon*
       // and then copied whole would be read back before the processor can forward the stores.
       auto at = [&](int k) { return k == axis ? d : s[k] + t * (e[k] - s[k]); };
       const std::array<double, 3> x{at(0), at(1), at(2)};
-      if (cross_below) below->v[below->n++] = x;
-      if (cross_above) above->v[above->n++] = x;
+      if (cross_below) add(*below, x);
+      if (cross_above) add(*above, x);
     }
   }
 }
@@ -93,8 +100,8 @@ Polygon clip_to_box(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f&
   if (box.contains(a) && box.contains(b) && box.contains(c)) return poly;
   Polygon above_lower;
   for (int axis = 0; axis < 3 && poly.n > 0; ++axis) {
-    split_plane(poly, axis, double(box.lower[axis]), nullptr, &above_lower);
-    split_plane(above_lower, axis, double(box.upper[axis]), &poly, nullptr);
+    split_plane(poly, axis, double(box.lower[axis]), kNoSide, &above_lower);
+    split_plane(above_lower, axis, double(box.upper[axis]), &poly, kNoSide);
   }
   return poly;
 }
@@ -109,24 +116,28 @@ Box3f ExactBox::rounded() const {
   return {Vec3f(low(0), low(1), low(2)), Vec3f(high(0), high(1), high(2))};
 }
 
-void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box, int axis,
-                   std::span<const float> planes, std::span<ExactBox> out) {
-  if (!usable(a, b, c, box) || out.size() != planes.size() + 1) return;
-  // Two polygons in turn hold what is left above the planes cut so far.
-  std::array<Polygon, 2> rest{clip_to_box(a, b, c, box), Polygon{}};
-  int cur = 0;
-  Polygon piece;
-  Box3f slab = box;
-  for (size_t i = 0; i < planes.size() && rest[cur].n > 0; ++i) {
-    const float p = std::clamp(planes[i], box.lower[axis], box.upper[axis]);
+ClippedTriangle::ClippedTriangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box)
+    : part_(usable(a, b, c, box) ? clip_to_box(a, b, c, box) : Polygon{}), box_(box) {}
+
+void ClippedTriangle::chop(int axis, std::span<const float> planes, std::span<ExactBox> out) const {
+  if (out.size() != planes.size() + 1) return;
+  // What is left above the planes cut so far: the clipped part, then two polygons in turn.
+  // Each piece below a plane is kept as its bounds alone.
+  std::array<Polygon, 2> rest;
+  const Polygon* left = &part_;
+  Box3f slab = box_;
+  for (size_t i = 0; i < planes.size() && left->n > 0; ++i) {
+    const float p = std::clamp(planes[i], box_.lower[axis], box_.upper[axis]);
     slab.upper[axis] = p;
-    split_plane(rest[cur], axis, double(p), &piece, &rest[1 - cur]);
-    out[i].extend(exact_bounds_in(piece, slab));
-    cur = 1 - cur;
+    ExactBox piece;
+    split_plane(*left, axis, double(p), &piece, &rest[i % 2]);
+    piece.clamp_to(slab);
+    out[i].extend(piece);
+    left = &rest[i % 2];
     slab.lower[axis] = p;
   }
-  slab.upper[axis] = box.upper[axis];
-  out[planes.size()].extend(exact_bounds_in(rest[cur], slab));
+  slab.upper[axis] = box_.upper[axis];
+  out[planes.size()].extend(exact_bounds_in(*left, slab));
 }
 
 Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {

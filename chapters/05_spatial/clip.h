@@ -66,13 +66,32 @@ Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f&
 std::pair<Box3f, Box3f> split_triangle_box(const Vec3f& a, const Vec3f& b, const Vec3f& c,
                                            const Box3f& box, int axis, float pos);
 
-/// Chops the part of triangle (a, b, c) inside `box` at the planes coordinate[axis] =
-/// planes[0] < planes[1] < ... (SBVH's reference chopping, done incrementally: the polygon is
-/// clipped to the box once, then each plane splits off one piece), and extends out[i] by the
-/// bounds of the piece between planes[i - 1] and planes[i] (out holds planes.size() + 1 boxes;
-/// the first and last pieces end at the box). Each piece's bounds are exact and kept in their
-/// slab; out[i].rounded() is what clip_triangle() gives for that slab, bit for bit.
-void chop_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box, int axis,
-                   std::span<const float> planes, std::span<ExactBox> out);
+/// A polygon during clipping: a triangle clipped by six planes has at most nine vertices (each
+/// plane adds at most one).
+struct ClipPolygon {
+  static constexpr int kMaxVertices = 10;
+  std::array<std::array<double, 3>, kMaxVertices> v;
+  int n = 0;
+};
+
+/// The part of triangle (a, b, c) inside a reference's box, clipped once, and chopped along
+/// each axis a spatial bin asks for (SBVH's reference chopping, done incrementally: each plane
+/// splits off one piece of what is left). A triangle or box that is not finite, or a box that
+/// is empty, leaves nothing to chop.
+class ClippedTriangle {
+ public:
+  ClippedTriangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box);
+
+  /// Chops the part at the planes coordinate[axis] = planes[0] < planes[1] < ..., and extends
+  /// out[i] by the bounds of the piece between planes[i - 1] and planes[i] (out holds
+  /// planes.size() + 1 boxes; the first and last pieces end at the box). Each piece's bounds
+  /// are exact and kept in their slab; out[i].rounded() is what clip_triangle() gives for that
+  /// slab, bit for bit.
+  void chop(int axis, std::span<const float> planes, std::span<ExactBox> out) const;
+
+ private:
+  ClipPolygon part_;  // empty when there is nothing to chop
+  Box3f box_;
+};
 
 }  // namespace rtk

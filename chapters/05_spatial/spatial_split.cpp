@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "04_sah/binning.h"
 #include "05_spatial/clip.h"
@@ -109,6 +110,8 @@ void bin_refs(const PrimRef* refs, size_t first, size_t last, const std::array<S
   for (size_t r = first; r < last; ++r) {
     const PrimRef& ref = refs[r];
     const Box3f box = ref.box();
+    // The triangle clipped to the reference's box once, for every axis that chops it.
+    std::optional<ClippedTriangle> part;
     for (int axis = 0; axis < 3; ++axis) {
       const Slabs& s = slabs[axis];
       if (!s.usable) continue;
@@ -121,9 +124,9 @@ void bin_refs(const PrimRef* refs, size_t first, size_t last, const std::array<S
       // Reference chopping: the exact part of the triangle in each slab it crosses.
       std::array<float, kMaxSpatialBins> planes;
       for (int i = f + 1; i <= l; ++i) planes[size_t(i - f - 1)] = s.plane(i);
-      chop_triangle(mesh.vertex(ref.prim, 0), mesh.vertex(ref.prim, 1), mesh.vertex(ref.prim, 2), box,
-                    axis, std::span<const float>(planes.data(), size_t(l - f)),
-                    std::span<ExactBox>(out.bounds[axis].data() + f, size_t(l - f + 1)));
+      if (!part) part.emplace(mesh.vertex(ref.prim, 0), mesh.vertex(ref.prim, 1), mesh.vertex(ref.prim, 2), box);
+      part->chop(axis, std::span<const float>(planes.data(), size_t(l - f)),
+                 std::span<ExactBox>(out.bounds[axis].data() + f, size_t(l - f + 1)));
     }
   }
 }
