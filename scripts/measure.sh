@@ -403,7 +403,7 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
     python3 bench/embree/summary.py standing "$B/bench/results.json" "$B/bench/results_sse4.json"
   table embree book/embree_build.md python3 bench/embree/summary.py build "$B/bench/results.json"
   table embree book/embree_render.md python3 bench/embree/summary.py render "$OUT/embree_render.json"
-  section_embree_build
+  run_section embree_build
 }
 
 section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
