@@ -129,6 +129,20 @@ TEST_CASE("ch05: clipped bounds contain every sampled point of the triangle in t
   CHECK(nonempty > 50);
 }
 
+TEST_CASE("ch05: a triangle or box that is not finite leaves nothing to chop") {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const std::vector<float> planes{0.25f, 0.5f};
+  const Box3f box({0, 0, 0}, {1, 1, 1});
+  for (const ClippedTriangle& part : {ClippedTriangle({nan, 0, 0}, {1, 0, 0}, {0, 1, 0}, box),
+                                      ClippedTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, Box3f({0, 0, 0}, {inf, 1, 1})),
+                                      ClippedTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, Box3f())})
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<ExactBox> out(planes.size() + 1);
+      part.chop(axis, planes, out);
+      for (const ExactBox& piece : out) CHECK(piece.rounded().empty());
+    }
+}
+
 // [ch05-test-chop]
 TEST_CASE("ch05: chopping at many planes gives each slab the bounds of clipping to that slab") {
   std::mt19937 gen(503);
