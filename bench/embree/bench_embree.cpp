@@ -25,9 +25,11 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -284,6 +286,18 @@ void add_scene_files(const std::string& list) {
   }
 }
 
+/// Exits with a message naming the option unless `text` is a whole number in [1, max].
+size_t count_option(const char* option, const char* text, size_t max) {
+  size_t n = 0;
+  const char* end = text + std::strlen(text);
+  const auto [rest, error] = std::from_chars(text, end, n);
+  if (error != std::errc() || rest != end || n < 1 || n > max) {
+    std::fprintf(stderr, "bench_embree: %s wants a whole number from 1 to %zu, not '%s'\n", option, max, text);
+    std::exit(2);
+  }
+  return n;
+}
+
 // Reads and removes this program's own options from argv, leaving Google Benchmark's.
 void parse_settings(int& argc, char** argv) {
   int kept = 1;
@@ -292,19 +306,23 @@ void parse_settings(int& argc, char** argv) {
     auto value = [&](const char* prefix) -> const char* {
       return arg.rfind(prefix, 0) == 0 ? argv[i] + std::string(prefix).size() : nullptr;
     };
-    if (const char* v = value("--rays=")) settings.rays = std::strtoull(v, nullptr, 10);
-    else if (const char* v = value("--threads=")) settings.threads = std::atoi(v);
+    if (const char* v = value("--rays=")) settings.rays = count_option("--rays", v, size_t(1) << 30);
+    else if (const char* v = value("--threads=")) settings.threads = int(count_option("--threads", v, 1024));
     else if (const char* v = value("--scenes=")) add_scene_files(v);
     else if (const char* v = value("--procedural=")) settings.procedural = v;
-    else if (const char* v = value("--rtk=")) settings.all_rtk = std::string(v) == "all";
+    else if (const char* v = value("--rtk=")) {
+      if (std::strcmp(v, "all") != 0 && std::strcmp(v, "default") != 0) {
+        std::fprintf(stderr, "bench_embree: --rtk must be default or all\n");
+        std::exit(2);
+      }
+      settings.all_rtk = std::strcmp(v, "all") == 0;
+    }
     else if (const char* v = value("--embree-isa=")) settings.embree_isa = v;
     else if (const char* v = value("--size=")) settings.size = std::strtod(v, nullptr);
     else if (arg == "--builds-only") settings.builds_only = true;
     else argv[kept++] = argv[i];
   }
   argc = kept;
-  if (settings.rays == 0) settings.rays = 1;
-  if (settings.threads < 1) settings.threads = 1;
   if (!(settings.size > 0.0) || settings.size > 1e4) {
     std::fprintf(stderr, "bench_embree: --size must be a scale factor in (0, 10000]\n");
     std::exit(2);
