@@ -3,21 +3,23 @@ tree of the default structure (BVH8, rotations on, leaves priced in blocks of ei
 1M, 4M and 16M triangles, from the growth/ benchmarks of `ch04_bench` (JSON; the fastest of
 the repetitions when the run repeated: the first build of a size maps its memory afresh, and
 what a fresh page costs moves with the machine's other work). One thread: the CPU time of the
-building thread, which a shared machine's load does not inflate; two threads: wall-clock time. The last column is what one thread's time per triangle would be if it grew exactly like
-log2 n from the smallest scene on.
+building thread, which a shared machine's load does not inflate; two threads: wall-clock time.
+The last column is what one thread's time per triangle would be if it grew exactly like log2 n
+from the smallest scene on.
 
     python3 growth_chart.py ch04_growth.json OUT.tsv"""
-import json
 import math
+import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "scripts"))
+import gbench_json  # noqa: E402
+
 
 def main():
-    with open(sys.argv[1]) as f:
-        runs = [b for b in json.load(f)["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
     rows = {}
-    for b in runs:
+    for b in gbench_json.repetitions(sys.argv[1]):
         m = re.match(r"growth/[^/]+/[^/]+/tris:(\d+)/threads:(\d+)", b["name"])
         if m:
             rows.setdefault((int(m.group(1)), int(m.group(2))), []).append(b)
