@@ -1,6 +1,7 @@
 // The binning passes of bin_kernels.h, compiled once per ISA (namespace rtk::RTK_ISA).
 #include "04_sah/bin_kernels.h"
 
+#include <limits>
 #include <utility>
 
 #include "01_base/simd.h"
@@ -13,6 +14,8 @@ using sah::Bin;
 using sah::BinMapping;
 using sah::Bins;
 using sah::PrimLanes;
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // [ch04-grow-bin]
 /// How many floats of a bin one minimum grows: eight where the ISA has 256-bit registers, a
@@ -83,25 +86,33 @@ uint32_t partition_and_bin(PrimRef* refs, uint32_t count, const sah::SplitPlane&
   // Hoare's partition: walk in from both ends, bin every primitive on the side it belongs to,
   // and swap the pairs found on the wrong sides.
   // Each primitive is read into lanes once; the two that stop the scans are binned from the
-  // lanes already read when they are swapped. The mappings are copied first: the bins are
-  // stored as floats, which the compiler must assume may be the mappings' floats, and it would
-  // otherwise read the mappings again after every store to a bin.
-  const BinMapping parent = *plane.map, left_map = *out.left_map, right_map = *out.right_map;
-  const sah::SplitPlane cut{&parent, plane.axis, plane.pos};
+  // lanes already read when they are swapped. The children's mappings are copied first: the
+  // bins are stored as floats, which the compiler must assume may be the mappings' floats, and
+  // it would otherwise read the mappings again after every store to a bin.
+  // A primitive goes left when its centroid lies below the plane's limit on the split axis
+  // (SplitPlane::left_limit()): the other lanes of `limit` are -infinity, below which nothing
+  // lies.
+  const BinMapping left_map = *out.left_map, right_map = *out.right_map;
+  alignas(16) float limit_lanes[4] = {-kInf, -kInf, -kInf, -kInf};
+  limit_lanes[plane.axis] = plane.left_limit();
+  const vfloat<4> limit = vfloat<4>::load(limit_lanes);
+  const auto below_limit = [&limit](const PrimLanes& p) {
+    return any(vfloat<4>::loadu(reinterpret_cast<const float*>(&p.centroid)) < limit);
+  };
   Bins& left = *out.left;
   Bins& right = *out.right;
   uint32_t i = 0, j = count;
   while (true) {
     for (; i < j; ++i) {
       const PrimLanes p(refs[i]);
-      if (!cut.goes_left(p)) break;
+      if (!below_limit(p)) break;
       add(left, p, left_map);
     }
     if (i == j) return i;
     const PrimLanes goes_right(refs[i]);
     for (; i < j - 1; --j) {
       const PrimLanes p(refs[j - 1]);
-      if (cut.goes_left(p)) break;
+      if (below_limit(p)) break;
       add(right, p, right_map);
     }
     if (i == j - 1) {  // refs[i] was the last one: it goes right

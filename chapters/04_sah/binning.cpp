@@ -2,6 +2,8 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace rtk::sah {
 
@@ -153,5 +155,34 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   return best;
 }
 // [ch04-sweep]
+
+float SplitPlane::left_limit() const {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const auto at_or_above = [&](float c) { return map->bin(c, axis) >= pos; };
+  const auto below = [](float c) { return std::nextafter(c, -kInf); };
+  // A few steps from the border's float suffice; then the limit is t: at or above, and the
+  // float below it not.
+  float t = map->origin[axis] + float(pos) / map->scale[axis];
+  for (int step = 0; step < 16 && std::isfinite(t); ++step) {
+    if (!at_or_above(t)) t = std::nextafter(t, kInf);
+    else if (at_or_above(below(t))) t = below(t);
+    else return t;
+  }
+  // Otherwise (a border near the end of the float range) bisect the floats, ordered as integers:
+  // below every float the bin is 0 < pos; at +infinity it is the last bin, >= pos.
+  const auto key = [](float f) {
+    const int32_t b = std::bit_cast<int32_t>(f);
+    return b < 0 ? int64_t(INT32_MIN) - b : int64_t(b);
+  };
+  const auto value = [](int64_t k) {
+    return std::bit_cast<float>(int32_t(k < 0 ? int64_t(INT32_MIN) - k : k));
+  };
+  int64_t lo = key(-kInf), hi = key(kInf);  // bin(lo) < pos <= bin(hi)
+  while (hi - lo > 1) {
+    const int64_t mid = lo + (hi - lo) / 2;
+    (at_or_above(value(mid)) ? hi : lo) = mid;
+  }
+  return value(hi);
+}
 
 }  // namespace rtk::sah

@@ -196,9 +196,18 @@ struct SplitPlane {
   int axis = 0;
   int pos = 0;
 
-  /// The same decision for a primitive already read into lanes, with the vector arithmetic of
-  /// BinMapping::bins(), which gives the same bin as bin().
-  RTK_INLINE bool goes_left(const PrimLanes& p) const { return map->bins(p.centroid)[axis] < pos; }
+  // [ch04-left-limit]
+  /// The least float whose bin on `axis` is `pos` or above. A bin never falls as the
+  /// coordinate grows: a subtraction, a product by a positive scale, a clamp and a truncation
+  /// each keep the order of their operands, rounding included. So a primitive goes left exactly
+  /// when its centroid's coordinate lies below this limit, and the partition asks one
+  /// comparison instead of a bin's arithmetic. The plane's own border, origin + pos / scale,
+  /// lands within a few floats of the limit; a walk float by float finds it.
+  float left_limit() const;
+  // [ch04-left-limit]
+
+  /// Whether `ref` goes left, by its centroid's bin on `axis` (the partition's kernels compare
+  /// with left_limit() instead, which decides the same).
   RTK_INLINE bool goes_left(const PrimRef& ref) const {
     float lo[3], hi[3];
     std::memcpy(lo, &ref.lower, sizeof lo);

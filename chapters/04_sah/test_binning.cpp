@@ -4,6 +4,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -151,6 +152,47 @@ TEST_CASE("ch04: the sweep finds no split when all centroids coincide") {
   for (uint32_t i = 0; i < 8; ++i) refs.push_back(box_ref(Vec3f(-float(i)), Vec3f(float(i)), i));
   const auto [map, bins] = bin_all(refs, 8);
   CHECK_FALSE(find_best_split(*bins, map).valid());
+}
+
+TEST_CASE("ch04: a split plane's left limit is the least float binned at or above its border") {
+  // Mappings over ordinary, offset, tiny and huge ranges; the last two put the border's float
+  // far from the limit (1e30 absorbs small coordinates), which the walk leaves to bisection.
+  const Box3f ranges[] = {
+      {Vec3f(0.0f), Vec3f(1.0f)},
+      {Vec3f(-3.7f, 100.25f, -1e-3f), Vec3f(5.1f, 100.5f, 2e-3f)},
+      {Vec3f(1e-30f), Vec3f(3e-30f)},
+      {Vec3f(-1e30f), Vec3f(1e30f)},
+      {Vec3f(-1e38f, -3e38f, 0.0f), Vec3f(2e38f, -1e38f, 3e38f)},
+  };
+  std::mt19937 rng(5);
+  int planes = 0;
+  for (const Box3f& range : ranges)
+    for (const int bins : {2, 5, 32, 64}) {
+      const BinMapping map(range, bins);
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!map.splittable(axis)) continue;
+        for (int pos = 1; pos < bins; ++pos) {
+          const SplitPlane plane{&map, axis, pos};
+          const float limit = plane.left_limit();
+          const float before = std::nextafter(limit, -std::numeric_limits<float>::infinity());
+          CHECK(map.bin(limit, axis) >= pos);
+          CHECK(map.bin(before, axis) < pos);
+          // And for coordinates around it and across the range, the comparison is the bin's.
+          std::uniform_real_distribution<float> across(range.lower[axis], range.upper[axis]);
+          float up = limit, down = limit;
+          for (int k = 0; k < 16; ++k) {
+            up = std::nextafter(up, std::numeric_limits<float>::infinity());
+            down = std::nextafter(down, -std::numeric_limits<float>::infinity());
+            const float c = across(rng);
+            CHECK(map.bin(up, axis) >= pos);
+            CHECK(map.bin(down, axis) < pos);
+            CHECK((c < limit) == (map.bin(c, axis) < pos));
+          }
+          ++planes;
+        }
+      }
+    }
+  CHECK(planes > 400);
 }
 
 TEST_CASE("ch04: one-pass partition sends each primitive to its side and bins it there") {
