@@ -90,7 +90,7 @@ const BackendEntry& resolve(const AccelConfig& config, Isa isa, size_t triangles
   const std::string accel = base + "." + split;
   std::vector<const BackendEntry*> rows;
   for (const BackendEntry& e : table)
-    if (accel_name(e) == accel) rows.push_back(&e);
+    if (e.base == base && e.split == split) rows.push_back(&e);
   if (base == "bvh4mb")  // chapter 8's structure is built from two meshes: api/motion_accel.h
     throw std::invalid_argument("-accel: bvh4mb is built by Accel(t0, t1, config) (10_kernel_api/motion_accel.h)");
   if (rows.empty())
@@ -191,16 +191,24 @@ std::vector<std::string> supported_tris(const std::string& accel) {
   return names;
 }
 
-AccelInfo resolve_config(const AccelConfig& config) {
+namespace {
+
+// The configuration resolved for a scene of `triangles` triangles (0 when not known yet), and
+// its table row.
+std::pair<AccelInfo, const BackendEntry*> resolve_for(const AccelConfig& config, size_t triangles) {
   check_threads(config.threads);
   AccelInfo info;
   info.isa = resolve_isa(config);
-  const BackendEntry& entry = resolve(config, info.isa, 0, &info.choice);
+  const BackendEntry& entry = resolve(config, info.isa, triangles, &info.choice);
   info.accel = accel_name(entry);
   info.tri = tri_name(entry);
   info.threads = config.threads;
-  return info;
+  return {info, &entry};
 }
+
+}  // namespace
+
+AccelInfo resolve_config(const AccelConfig& config) { return resolve_for(config, 0).first; }
 
 Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
   // Chapter 8's motion structure on a static scene, as Embree 1.1 builds it: the mesh is its
@@ -209,11 +217,10 @@ Accel::Accel(const TriangleMesh& mesh, const AccelConfig& config) {
     *this = Accel(mesh, mesh, config);
     return;
   }
-  check_threads(config.threads);
-  info_ = resolve_config(config);
-  // (The scene's size may change the default layout that resolve_config() reported.)
-  const BackendEntry& entry = resolve(config, info_.isa, mesh.size(), &info_.choice);
-  info_.tri = tri_name(entry);
+  // As resolve_config(), for a scene of this size, which may change the default layout.
+  const auto [info, row] = resolve_for(config, mesh.size());
+  info_ = info;
+  const BackendEntry& entry = *row;
   if (mesh.vertices.size() >= kInvalidPrim || mesh.triangles.size() >= kInvalidPrim)
     throw std::invalid_argument("the scene has more than 2^32 - 2 triangles or vertices");
   for (const auto& tri : mesh.triangles)
