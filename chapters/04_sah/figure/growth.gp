@@ -1,6 +1,7 @@
 # Chapter 4's growth chart: build time per triangle (left axis; one thread's also as its user
 # time alone) and peak memory per triangle (right axis) of the default structure's tree against
-# the scene's size, with the curve that user time would follow if it grew like log n. gnuplot -e "table='IN.tsv'; png='OUT.png'" growth.gp
+# the scene's size, with the curve that user time would follow if it grew like log n.
+# gnuplot -e "table='IN.tsv'; png='OUT.png'" growth.gp
 set terminal pngcairo size 800,420 font "sans,11"
 set output png
 set datafile separator "\t"
