@@ -8,6 +8,9 @@
 
 #include "01_base/aligned.h"
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 using namespace rtk;
 
 // [ch01-test-huge-pages]
@@ -27,6 +30,39 @@ TEST_CASE("ch01: large blocks are aligned for huge pages, small ones as asked") 
   CHECK(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePageBytes == 0);
 }
 // [ch01-test-huge-pages]
+
+// [ch01-test-map-pages]
+TEST_CASE("ch01: pages mapped now are resident before anything touches them, contents kept") {
+  // A mapping of its own, so that its pages are fresh, and of small pages only, so that one
+  // touched page does not bring its 2 MB neighbourhood in with it.
+  const std::size_t page = std::size_t(::sysconf(_SC_PAGESIZE)), pages = 64;
+  void* mapping = ::mmap(nullptr, pages * page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  REQUIRE(mapping != MAP_FAILED);
+  ::madvise(mapping, pages * page, MADV_NOHUGEPAGE);
+  char* block = static_cast<char*>(mapping);
+  auto resident = [&](std::size_t first, std::size_t count) {
+    std::vector<unsigned char> in_core(count);
+    REQUIRE(::mincore(block + first * page, count * page, in_core.data()) == 0);
+    std::size_t n = 0;
+    for (const unsigned char c : in_core) n += c & 1;
+    return n;
+  };
+  block[0] = 'a';  // written before the request
+  CHECK(resident(1, pages - 1) == 0);
+  // From inside page 3 to inside page 40: pages 3 to 40 are mapped, the others not.
+  if (map_pages_now(block + 3 * page + 10, 37 * page)) {
+    CHECK(resident(3, 38) == 38);
+    CHECK(resident(1, 2) == 0);
+    CHECK(resident(41, pages - 41) == 0);
+    CHECK(block[0] == 'a');
+    CHECK(block[3 * page + 10] == 0);  // fresh memory reads as zero, mapped early or not
+  } else {
+    MESSAGE("this system cannot map pages on request; map_pages_now changes nothing here");
+  }
+  CHECK(map_pages_now(block, 0));  // nothing to map
+  ::munmap(mapping, pages * page);
+}
+// [ch01-test-map-pages]
 
 // [ch01-test-block-cache]
 TEST_CASE("ch01: a freed large block is handed out again, and the cache stays within its cap") {

@@ -293,6 +293,25 @@ Prepared prepare(const TriangleMesh& mesh) {
   return p;
 }
 
+// [ch04-size-fresh]
+/// Sizes one of the tree's arrays, mapping its pages on the arena's threads first. resize()
+/// writes every element on one thread, and in fresh memory a write must wait for the kernel to
+/// map and zero the page, which on a large scene made these two resizes a serial stretch that
+/// a second thread could not shorten. Mapped in pieces on every thread, the resize that follows
+/// writes into memory that is already there. One thread alone gains nothing by asking first.
+template <class Vector>
+void resize_fresh(Vector& v, size_t n) {
+  const size_t bytes = n * sizeof(typename Vector::value_type);
+  if (bytes >= kHugePageBytes && v.capacity() < n && tbb::this_task_arena::max_concurrency() > 1) {
+    v.reserve(n);  // the block, untouched
+    char* const base = reinterpret_cast<char*>(v.data());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, bytes, kHugePageBytes),
+                      [&](const tbb::blocked_range<size_t>& r) { map_pages_now(base + r.begin(), r.size()); });
+  }
+  v.resize(n);
+}
+// [ch04-size-fresh]
+
 template <int N>
 BuildTree<N> build(const Prepared& p, size_t input_size, const SahBuildOptions& options,
                    SahBuildStats* stats) {
@@ -308,13 +327,13 @@ BuildTree<N> build(const Prepared& p, size_t input_size, const SahBuildOptions& 
     } else {
       Builder<N> builder(p.refs.get(), options, counters);
       const auto fragment = builder.build_job(root, 1);
-      tree.nodes.resize(fragment->total);
+      resize_fresh(tree.nodes, fragment->total);
       place<N>(*fragment, 0, tree.nodes.data());
       tree.root.box = root.bounds;
       tree.root.index = 0;
       tree.root.leaf_count = 0;
     }
-    tree.prim_ids.resize(p.count);
+    resize_fresh(tree.prim_ids, p.count);
     const PrimRef* refs = p.refs.get();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, p.count, kPartitionBlockPrims),
                       [&](const tbb::blocked_range<size_t>& r) {
