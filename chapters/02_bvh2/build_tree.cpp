@@ -8,12 +8,6 @@
 
 namespace rtk {
 
-bool vertex_indices_valid(const TriangleMesh& mesh, size_t i) {
-  const size_t vertex_count = mesh.vertices.size();
-  const auto& tri = mesh.triangles[i];
-  return tri[0] < vertex_count && tri[1] < vertex_count && tri[2] < vertex_count;
-}
-
 void check_vertex_indices(const TriangleMesh& mesh, size_t first, size_t last) {
   // An index past the vertex array would make us read memory that is not ours: refuse the mesh
   // and say which triangle is wrong.
@@ -26,28 +20,11 @@ void check_vertex_indices(const TriangleMesh& mesh, size_t first, size_t last) {
                                     std::to_string(vertex_count) + " vertices");
 }
 
-// [ch02-prim-ref]
-PrimRef make_prim_ref(const TriangleMesh& mesh, uint32_t i) {
-  // Non-finite vertices only give a non-finite box, which the builders leave out of the tree
-  // (such a triangle can never be hit). Box3f::extend follows the SIMD min/max rule, under
-  // which a NaN coordinate can vanish from a box: mark such a box as NaN outright.
-  const bool finite = is_finite(mesh.vertex(i, 0)) && is_finite(mesh.vertex(i, 1)) && is_finite(mesh.vertex(i, 2));
-  if (finite) return PrimRef(mesh.bounds(i), i);
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  return PrimRef(Box3f(Vec3f(nan), Vec3f(nan)), i);
-}
-// [ch02-prim-ref]
-
 std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh) {
   check_vertex_indices(mesh);
   std::vector<PrimRef> refs(mesh.size());
   for (uint32_t i = 0; i < mesh.size(); ++i) refs[i] = make_prim_ref(mesh, i);
   return refs;
-}
-
-bool is_buildable(const PrimRef& ref) {
-  const Vec3f lo = ref.lower, hi = ref.upper;
-  return is_finite(lo) && is_finite(hi) && lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z;
 }
 
 template <int N>

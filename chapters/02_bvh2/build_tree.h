@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,15 +35,32 @@ struct alignas(16) PrimRef {
 static_assert(sizeof(PrimRef) == 32, "two 16-byte halves: lower+id, upper+unused");
 
 /// Whether all three vertex indices of triangle i lie within the mesh's vertex array.
-bool vertex_indices_valid(const TriangleMesh& mesh, size_t i);
+inline bool vertex_indices_valid(const TriangleMesh& mesh, size_t i) {
+  const size_t vertex_count = mesh.vertices.size();
+  const auto& tri = mesh.triangles[i];
+  return tri[0] < vertex_count && tri[1] < vertex_count && tri[2] < vertex_count;
+}
 
 /// Throws std::invalid_argument, naming the triangle and the index, for the first triangle of
 /// [first, last) with a vertex index past the vertex array; returns when there is none.
 void check_vertex_indices(const TriangleMesh& mesh, size_t first = 0, size_t last = SIZE_MAX);
 
+// [ch02-prim-ref]
 /// The reference of triangle i, whose vertex indices must be valid: the triangle's box, or a
-/// NaN box when a vertex is NaN or infinite (no builder places it).
-PrimRef make_prim_ref(const TriangleMesh& mesh, uint32_t i);
+/// NaN box when a vertex is NaN or infinite (no builder places it). Inline, because a builder
+/// makes one per triangle: called across files, the test of nine coordinates and the box cost
+/// more in calls and reloads than in arithmetic.
+inline PrimRef make_prim_ref(const TriangleMesh& mesh, uint32_t i) {
+  const Vec3f a = mesh.vertex(i, 0), b = mesh.vertex(i, 1), c = mesh.vertex(i, 2);
+  // Non-finite vertices only give a non-finite box, which the builders leave out of the tree
+  // (such a triangle can never be hit). Box3f::extend follows the SIMD min/max rule, under
+  // which a NaN coordinate can vanish from a box: mark such a box as NaN outright. A finite
+  // coordinate minus itself is 0 and any other is NaN, so one sum tests all nine.
+  if (is_finite((a - a) + (b - b) + (c - c))) return PrimRef(Box3f(a).extend(b).extend(c), i);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  return PrimRef(Box3f(Vec3f(nan), Vec3f(nan)), i);
+}
+// [ch02-prim-ref]
 
 /// One reference per triangle of the mesh, in primID order. Zero-area triangles are kept (a
 /// triangle's primID never changes); they are simply never hit. A triangle with a NaN or
@@ -53,7 +71,10 @@ std::vector<PrimRef> make_prim_refs(const TriangleMesh& mesh);
 /// Whether a builder can place the reference: a finite box with lower <= upper. Builders leave
 /// other references (a triangle with a NaN or infinite vertex) out of the tree, so such a
 /// triangle is never hit and never disturbs the boxes of the others.
-bool is_buildable(const PrimRef& ref);
+inline bool is_buildable(const PrimRef& ref) {
+  const Vec3f lo = ref.lower, hi = ref.upper;
+  return is_finite(lo) && is_finite(hi) && lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z;
+}
 
 /// A tree whose inner nodes have 2 to N children. A child is either an inner node or a leaf; a
 /// leaf is a range [first, first + count) of `prim_ids`.

@@ -113,6 +113,28 @@ TEST_CASE("ch02: the median builder fills a node before it goes deeper") {
   CHECK(again.prim_ids == tree.prim_ids);
 }
 
+TEST_CASE("ch02: a triangle's reference is its box, or a NaN box whichever coordinate is not finite") {
+  const TriangleMesh mesh = test::make_random_soup(10, 3);
+  for (uint32_t i = 0; i < mesh.size(); ++i) {
+    const PrimRef r = make_prim_ref(mesh, i);
+    CHECK(r.prim == i);
+    CHECK(r.box() == mesh.bounds(i));
+    CHECK(is_buildable(r));
+  }
+  const float bad_values[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                              -std::numeric_limits<float>::infinity()};
+  for (const float bad : bad_values)
+    for (int corner = 0; corner < 3; ++corner)
+      for (int axis = 0; axis < 3; ++axis) {
+        TriangleMesh m = mesh;
+        m.vertices[m.triangles[4][size_t(corner)]][axis] = bad;
+        const PrimRef r = make_prim_ref(m, 4);
+        CHECK(r.prim == 4);
+        CHECK_FALSE(is_buildable(r));
+        CHECK(std::isnan(r.lower.x));
+      }
+}
+
 TEST_CASE("ch02: the median builder's small and bad inputs") {
   const std::vector<PrimRef> none;
   CHECK(build_median<2>(none, 4).empty());
