@@ -1,8 +1,6 @@
 #include "02_bvh2/build_tree.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
