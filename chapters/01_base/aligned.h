@@ -53,8 +53,8 @@ inline void advise_huge_pages(void* p, std::size_t bytes) {
 /// Returns whether the pages are mapped now; false where the system has no such request or
 /// refuses it, and then they are mapped on first touch as always.
 inline bool map_pages_now(void* p, std::size_t bytes) {
+  if (bytes == 0) return true;  // nothing to map, on any system
 #if defined(MADV_POPULATE_WRITE)
-  if (bytes == 0) return true;
   static const std::uintptr_t page = std::uintptr_t(::sysconf(_SC_PAGESIZE));
   const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(p) / page * page;
   const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes + page - 1) / page * page;
