@@ -92,7 +92,8 @@ struct Tracer {
 class Accel {
  public:
   /// Builds the structure. Throws std::invalid_argument, naming the option (-accel, -tri,
-  /// -isa, -threads) and listing what is supported, when the configuration is not one RTK has.
+  /// -isa, -threads) and listing what is supported, when the configuration is not one RTK has,
+  /// and naming the triangle when a vertex index lies past the mesh's vertices.
   Accel(const TriangleMesh& mesh, const AccelConfig& config = {});
   /// Builds a structure for a scene in linear motion: `t0` holds the vertices at shutter time 0,
   /// `t1` the same triangles with the vertices at time 1, and each ray's time picks the moment.

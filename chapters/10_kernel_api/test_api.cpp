@@ -12,6 +12,7 @@
 
 #include "07_intersectors/triangle_config.h"
 #include "10_kernel_api/accel.h"
+#include "10_kernel_api/motion_accel.h"
 #include "testing/brute_force.h"
 #include "01_base/ray_sets.h"
 #include "testing/sanitizer_build.h"
@@ -227,6 +228,30 @@ TEST_CASE("ch10: unsupported configurations are refused with the supported list"
   CHECK(refusal(c) == "");
   c.tri = "";
   CHECK(refusal(c) == "");
+}
+
+TEST_CASE("ch10: a vertex index past the vertices is refused by every structure, naming the triangle") {
+  // Triangle 3 of a small sphere names a vertex that does not exist. Every structure refuses
+  // the scene before it reads a vertex, with the builders' message: which triangle, which
+  // vertex, how many there are.
+  TriangleMesh mesh = test::make_sphere(4, 4);
+  const uint32_t past = uint32_t(mesh.vertices.size()) + 5;
+  mesh.triangles[3][1] = past;
+  std::vector<std::string> accels = supported_accels();
+  accels.push_back("");                         // the default
+  accels.push_back(std::string(kMotionAccel));  // chapter 8's, on a scene that does not move
+  for (const std::string& accel : accels) {
+    CAPTURE(accel);
+    AccelConfig config;
+    config.accel = accel;
+    std::string message;
+    try {
+      Accel built(mesh, config);
+    } catch (const std::invalid_argument& e) {
+      message = e.what();
+    }
+    CHECK(contains(message, "triangle 3 names vertex " + std::to_string(past)));
+  }
 }
 
 TEST_CASE("ch10: a batch traced sorted or in packets gives the answers of the batch traced one ray at a time") {
