@@ -228,6 +228,9 @@ class ScriptReader {
         s_.options.max_depth = static_cast<int>(integer(key, 0, 1 << 16));
       } else if (key.text == "spp") {
         s_.options.spp = static_cast<int>(integer(key, 1, 1 << 20));
+      } else if (key.text == "rrDepth") {
+        // RTK's own: the bounces before Russian roulette starts (chapter 14).
+        s_.options.rr_depth = static_cast<int>(integer(key, 0, 1 << 16));
       } else if (key.text == "minContribution") {
         const float m = number(key);
         if (!(m >= 0.0f)) fail(key.where, "-renderer: minContribution must be 0 or more");
@@ -561,7 +564,7 @@ constexpr ScriptOptionHelp kScriptOptions[] = {
     {"-spp", "n", "samples per pixel (default 1)"},
     {"-depth", "n", "most scattering events on a path (default 10)"},
     {"-gamma", "g", "display gamma of 8-bit outputs (default 1)"},
-    {"-renderer", "NAME [{ key = value ... }]", "pathtracer (pt) { depth spp minContribution } or debug (eye light)"},
+    {"-renderer", "NAME [{ key = value ... }]", "pathtracer (pt) { depth spp minContribution rrDepth } or debug (eye light)"},
     {"-seed", "n", "random seed: another, equally good image"},
     {"-sampler", "independent|sobol", "sample generator (default sobol)"},
     {"-filter", "box|tent|bspline", "pixel filter (default box)"},

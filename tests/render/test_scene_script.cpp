@@ -75,7 +75,7 @@ TEST_CASE("ch14: a valid script loads geometry, materials, lights, camera and op
                                   "-quadlight 0 2 0  1 0 0  0 0 1  10 10 10\n"
                                   "-pointlight 0 5 0 100 100 100 -ambientlight 0.1 0.1 0.1\n"
                                   "-size 64 32 -spp 3 -gamma 2.2 -accel bvh4 -seed 9\n"
-                                  "-renderer pathtracer { depth = 5 minContribution = 0.01 }\n"
+                                  "-renderer pathtracer { depth = 5 minContribution = 0.01 rrDepth = 2 }\n"
                                   "-o out.png\n");
   SceneScript s;
   std::vector<std::string> warnings;
@@ -93,15 +93,17 @@ TEST_CASE("ch14: a valid script loads geometry, materials, lights, camera and op
   CHECK(s.options.height == 32);
   CHECK(s.options.spp == 3);
   CHECK(s.options.max_depth == 5);
+  CHECK(s.options.rr_depth == 2);
   CHECK(s.options.seed == 9);
   CHECK(s.tone.gamma == doctest::Approx(2.2));
   CHECK(s.accel.accel == "bvh4");
   REQUIRE(s.output_states.size() == 1);
   CHECK(s.output_states[0].path == dir.path / "out.png");
   sc.validate();
-  // Embree 1.1's minContribution is read, not warned about.
+  // Embree 1.1's minContribution and RTK's rrDepth are read, not warned about.
   bool warned_minc = false;
-  for (const auto& w : warnings) warned_minc |= w.find("minContribution") != std::string::npos;
+  for (const auto& w : warnings)
+    warned_minc |= w.find("minContribution") != std::string::npos || w.find("rrDepth") != std::string::npos;
   CHECK_FALSE(warned_minc);
   CHECK(s.options.min_contribution == doctest::Approx(0.01f));
   // The command line is read by the same parser and overrides the script.
