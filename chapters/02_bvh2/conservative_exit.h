@@ -9,6 +9,8 @@
 #error "conservative_exit.h belongs to kernel sources compiled once per ISA"
 #endif
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "01_base/simd.h"
@@ -56,7 +58,9 @@ RTK_INLINE float conservative_tfar(float tfar, bool widen = true) {
 /// exit is at least tnear, so only exits of 0 and above matter, and for them a larger factor is
 /// a larger exit. Behind the origin the same factor would lower an exit, so a ray with
 /// tnear < 0 is widened after the minimum. `none` is the exact slab test, for measurements.
-enum class ExitWidening { none, after_min, folded };
+/// `fused` is `folded` with each slab distance made by one fused multiply-add (fused_offset),
+/// where the ISA has them.
+enum class ExitWidening { none, after_min, folded, fused };
 
 /// -1/dir for the far planes of a ray whose exits are widened `folded`: the same bound as
 /// widen_exit, applied before the product instead of after it. The product that makes a slab
@@ -66,5 +70,24 @@ enum class ExitWidening { none, after_min, folded };
 /// exact arithmetic is never rounded below it, as with widen_exit.
 RTK_INLINE float folded_reciprocal(float neg_rdir) { return neg_rdir * (1.0f + kExitWidening); }
 // [ch02-folded-widening]
+
+// [ch02-fused-offset]
+/// A `fused` slab distance is plane * rdir - offset in one fused multiply-add, which rounds
+/// once: rdir is 1/dir for the near planes and the widened reciprocal (-folded_reciprocal) for
+/// the far ones, and the offset stands for org * rdir, which rounds too. So the rounded product
+/// is moved away by 4u of itself (at least by the smallest normal float, below which a product
+/// rounds by a fixed amount), up for the near planes and down for the far ones: whatever both
+/// roundings did, the near offset is at least the exact org * rdir and the far one at most.
+/// Rounding keeps order, so an entry comes out at most, and an exit at least, the exact
+/// difference of plane and origin times rdir rounded once. That is one rounding fewer than the
+/// `folded` test's subtraction and product, and kExitWidening, which covers those, covers this.
+/// Only for offsets that are finite: an axis-parallel ray's reciprocal is infinite, and its
+/// product with the plane minus an infinite offset would be infinity minus infinity.
+RTK_INLINE float fused_offset(float org, float rdir, bool near) {
+  const float q = org * rdir;
+  const float margin = std::max(std::fabs(q) * (4 * 0x1p-24f), std::numeric_limits<float>::min());
+  return near ? q + margin : q - margin;
+}
+// [ch02-fused-offset]
 
 }  // namespace rtk::RTK_ISA

