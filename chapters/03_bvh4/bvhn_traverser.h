@@ -78,16 +78,18 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = Exit
   const Vec3f rdir{1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
   r.neg_rdir_x = vfloat<N>(-rdir.x), r.neg_rdir_y = vfloat<N>(-rdir.y), r.neg_rdir_z = vfloat<N>(-rdir.z);
   const bool folded = widening == ExitWidening::folded || widening == ExitWidening::fused;
-  auto far = [folded](float neg_rdir) { return vfloat<N>(folded ? folded_reciprocal(neg_rdir) : neg_rdir); };
-  r.far_rdir_x = far(-rdir.x), r.far_rdir_y = far(-rdir.y), r.far_rdir_z = far(-rdir.z);
+  auto far = [folded](float neg_rdir) { return folded ? folded_reciprocal(neg_rdir) : neg_rdir; };
+  const Vec3f neg_far_rdir{far(-rdir.x), far(-rdir.y), far(-rdir.z)};
+  r.far_rdir_x = vfloat<N>(neg_far_rdir.x), r.far_rdir_y = vfloat<N>(neg_far_rdir.y),
+  r.far_rdir_z = vfloat<N>(neg_far_rdir.z);
   if (widening == ExitWidening::fused) {
     // [ch03-fused-ray]
-    // The far planes' reciprocal is the folded one above, turned positive.
-    const Vec3f far_rdir{-folded_reciprocal(-rdir.x), -folded_reciprocal(-rdir.y), -folded_reciprocal(-rdir.z)};
+    // The far planes' offsets are made with the folded reciprocal above, turned positive.
     const Vec3f near_offset{fused_offset(ray.org.x, rdir.x, true), fused_offset(ray.org.y, rdir.y, true),
                             fused_offset(ray.org.z, rdir.z, true)};
-    const Vec3f far_offset{fused_offset(ray.org.x, far_rdir.x, false), fused_offset(ray.org.y, far_rdir.y, false),
-                           fused_offset(ray.org.z, far_rdir.z, false)};
+    const Vec3f far_offset{fused_offset(ray.org.x, -neg_far_rdir.x, false),
+                           fused_offset(ray.org.y, -neg_far_rdir.y, false),
+                           fused_offset(ray.org.z, -neg_far_rdir.z, false)};
     r.near_offset_x = vfloat<N>(near_offset.x), r.near_offset_y = vfloat<N>(near_offset.y),
     r.near_offset_z = vfloat<N>(near_offset.z);
     r.far_offset_x = vfloat<N>(far_offset.x), r.far_offset_y = vfloat<N>(far_offset.y),
