@@ -46,51 +46,68 @@ RTK_INLINE uint32_t octant_of(const Vec3f& dir) {
 /// values chapter 3's BvhNRay and chapter 2's Precalc hold for its ray; the rays share their
 /// octant, so the near and far rows of a node are the same for all. A lane without a ray (a
 /// group's invalid rays are left out of its packet, so these are the lanes past its count) is
-/// dead from the start: its interval is empty.
+/// dead from the start: its interval is empty. What the box test reads and never changes is
+/// kept apart (PacketBox), so that the traversal can hold it in registers.
+template <int P>
+struct PacketBox {
+  vfloat<P> org_x, org_y, org_z;
+  vfloat<P> neg_rdir_x, neg_rdir_y, neg_rdir_z;
+  vfloat<P> tnear;  ///< tnear clamped to finite, as BvhNRay has it
+  size_t near_x, near_y, near_z, far_x, far_y, far_z;
+};
+
 template <int P>
 struct RayPacket {
   MoellerTrumbore::Precalc<P> pre;  ///< origins, directions and tnear as the test reads them
-  vfloat<P> neg_rdir_x, neg_rdir_y, neg_rdir_z;
-  vfloat<P> box_tnear;  ///< tnear clamped to finite, as BvhNRay has it
+  PacketBox<P> box;     ///< what the box test reads, the same for the whole traversal
   vfloat<P> tfar;       ///< the closest hit so far (the ray's tfar before any)
   vfloat<P> box_tfar;   ///< tfar widened and kept finite (conservative_tfar)
   uint32_t live = 0;    ///< lanes still looking (occlusion: not yet blocked)
-  size_t near_x, near_y, near_z, far_x, far_y, far_z;
 
   explicit RayPacket(const Ray& first) : pre(first) {}
 };
 
-/// Loads `count` rays (at most P, all valid, all of octant `octant`) into a packet.
+/// Loads `count` rays (at most P, all valid, all of octant `octant`) into a packet. The rays'
+/// fields are gathered into lanes (the lanes past `count` repeat the first ray), and each value
+/// is then made for all lanes at once by the operations make_bvhn_ray applies to one ray: an
+/// IEEE operation rounds the same in a lane as in a scalar, so every lane holds its single
+/// ray's values bit for bit.
 template <int P, int N>
 RTK_INLINE RayPacket<P> make_packet(const Ray* rays, int count, uint32_t octant) {
   constexpr float kInf = std::numeric_limits<float>::infinity(), kMax = std::numeric_limits<float>::max();
-  alignas(64) float ox[P], oy[P], oz[P], dx[P], dy[P], dz[P], nx[P], ny[P], nz[P], tn[P], btn[P], tf[P], btf[P];
+  alignas(64) float field[9][P];  // a Ray is nine floats: org, tnear, dir, time, tfar
   for (int i = 0; i < P; ++i) {
-    const Ray& ray = rays[i < count ? i : 0];
-    ox[i] = ray.org.x, oy[i] = ray.org.y, oz[i] = ray.org.z;
-    dx[i] = ray.dir.x, dy[i] = ray.dir.y, dz[i] = ray.dir.z;
-    // The same divisions and clamps as make_bvhn_ray and conservative_tfar.
-    nx[i] = -(1.0f / ray.dir.x), ny[i] = -(1.0f / ray.dir.y), nz[i] = -(1.0f / ray.dir.z);
-    const bool live = i < count;
-    tn[i] = live ? ray.tnear : kInf;
-    btn[i] = live ? (ray.tnear > -kMax ? ray.tnear : -kMax) : kInf;
-    tf[i] = live ? ray.tfar : -kInf;
-    btf[i] = live ? conservative_tfar(ray.tfar, true) : -kMax;
+    const float* ray = reinterpret_cast<const float*>(&rays[i < count ? i : 0]);
+    for (int f = 0; f < 9; ++f) field[f][i] = ray[f];
   }
+  static_assert(sizeof(Ray) == 9 * sizeof(float) && offsetof(Ray, tfar) == 8 * sizeof(float));
+  auto lanes = [&field](int f) { return vfloat<P>::load(field[f]); };
+  const Vec3v<P> org(lanes(0), lanes(1), lanes(2)), dir(lanes(4), lanes(5), lanes(6));
+  const vfloat<P> tnear = lanes(3), tfar = lanes(8);
+  alignas(64) float lane_index[P];
+  for (int i = 0; i < P; ++i) lane_index[i] = float(i);
+  const vbool<P> live = vfloat<P>::load(lane_index) < vfloat<P>(float(count));
+
   RayPacket<P> p(rays[0]);
-  p.pre.org = Vec3v<P>(vfloat<P>::load(ox), vfloat<P>::load(oy), vfloat<P>::load(oz));
-  p.pre.dir = Vec3v<P>(vfloat<P>::load(dx), vfloat<P>::load(dy), vfloat<P>::load(dz));
-  p.pre.tnear = vfloat<P>::load(tn);
-  p.neg_rdir_x = vfloat<P>::load(nx), p.neg_rdir_y = vfloat<P>::load(ny), p.neg_rdir_z = vfloat<P>::load(nz);
-  p.box_tnear = vfloat<P>::load(btn);
-  p.tfar = vfloat<P>::load(tf);
-  p.box_tfar = vfloat<P>::load(btf);
+  p.pre.org = org, p.pre.dir = dir;
+  p.pre.tnear = select(live, tnear, vfloat<P>(kInf));
+  const vfloat<P> one(1.0f);
+  const Vec3v<P> rdir(one / dir.x, one / dir.y, one / dir.z);
+  PacketBox<P>& box = p.box;
+  box.org_x = org.x, box.org_y = org.y, box.org_z = org.z;
+  box.neg_rdir_x = -rdir.x, box.neg_rdir_y = -rdir.y, box.neg_rdir_z = -rdir.z;
+  // make_bvhn_ray's clamp of tnear and conservative_tfar, and empty intervals for the dead lanes.
+  alignas(64) float box_tfar[P];
+  for (int i = 0; i < P; ++i) box_tfar[i] = conservative_tfar(field[8][i], true);
+  box.tnear = select(live, select(tnear > vfloat<P>(-kMax), tnear, vfloat<P>(-kMax)), vfloat<P>(kInf));
+  p.tfar = select(live, tfar, vfloat<P>(-kInf));
+  p.box_tfar = select(live, vfloat<P>::load(box_tfar), vfloat<P>(-kMax));
   p.live = count >= 32 ? ~0u : (1u << count) - 1;
   // Chapter 3's rows: N floats each, the two rows of an axis adjacent, lower first.
   constexpr size_t kRow = sizeof(float) * N;
   auto near_row = [](int axis, bool negative) { return size_t(2 * axis) * kRow + (negative ? kRow : 0); };
-  p.near_x = near_row(0, octant & 1), p.near_y = near_row(1, octant & 2), p.near_z = near_row(2, octant & 4);
-  p.far_x = p.near_x ^ kRow, p.far_y = p.near_y ^ kRow, p.far_z = p.near_z ^ kRow;
+  box.near_x = near_row(0, octant & 1), box.near_y = near_row(1, octant & 2), box.near_z = near_row(2, octant & 4);
+  box.far_x = box.near_x ^ kRow, box.far_y = box.near_y ^ kRow, box.far_z = box.near_z ^ kRow;
   return p;
 }
 // [ch09-packet-ray]
@@ -99,25 +116,23 @@ RTK_INLINE RayPacket<P> make_packet(const Ray* rays, int count, uint32_t octant)
 /// Tests the packet against child `c` of a node: the lanes that enter its box (in the mask),
 /// with chapter 3's intersect_node arithmetic lane for lane (its exits widened after the
 /// minimum, as chapter 3's are for a ray with tnear < 0), and each lane's entry distance in
-/// `entry` (+inf for the lanes that miss).
+/// `entry` (+inf for the lanes that miss). `box_tfar` is the packet's, as it stands.
 template <int P, int N>
-RTK_INLINE uint32_t enter_child(const NodeN<N>& node, int c, const RayPacket<P>& p, vfloat<P>& entry) {
+RTK_INLINE uint32_t enter_child(const NodeN<N>& node, int c, const PacketBox<P>& p, vfloat<P> box_tfar,
+                                vfloat<P>& entry) {
   const char* base = reinterpret_cast<const char*>(&node) + sizeof(float) * size_t(c);
   auto plane = [base](size_t row) { return vfloat<P>(*reinterpret_cast<const float*>(base + row)); };
-  const vfloat<P>& ox = p.pre.org.x;
-  const vfloat<P>& oy = p.pre.org.y;
-  const vfloat<P>& oz = p.pre.org.z;
-  const vfloat<P> nx = (ox - plane(p.near_x)) * p.neg_rdir_x;
-  const vfloat<P> ny = (oy - plane(p.near_y)) * p.neg_rdir_y;
-  const vfloat<P> nz = (oz - plane(p.near_z)) * p.neg_rdir_z;
-  const vfloat<P> fx = (ox - plane(p.far_x)) * p.neg_rdir_x;
-  const vfloat<P> fy = (oy - plane(p.far_y)) * p.neg_rdir_y;
-  const vfloat<P> fz = (oz - plane(p.far_z)) * p.neg_rdir_z;
-  const vfloat<P> dist = max(max(nx, ny), max(nz, p.box_tnear));
-  const vfloat<P> exit = min(widen_exit(min(min(fx, fy), fz)), p.box_tfar);
+  const vfloat<P> nx = (p.org_x - plane(p.near_x)) * p.neg_rdir_x;
+  const vfloat<P> ny = (p.org_y - plane(p.near_y)) * p.neg_rdir_y;
+  const vfloat<P> nz = (p.org_z - plane(p.near_z)) * p.neg_rdir_z;
+  const vfloat<P> fx = (p.org_x - plane(p.far_x)) * p.neg_rdir_x;
+  const vfloat<P> fy = (p.org_y - plane(p.far_y)) * p.neg_rdir_y;
+  const vfloat<P> fz = (p.org_z - plane(p.far_z)) * p.neg_rdir_z;
+  const vfloat<P> dist = max(max(nx, ny), max(nz, p.tnear));
+  const vfloat<P> exit = min(widen_exit(min(min(fx, fy), fz)), box_tfar);
   const vbool<P> in = dist <= exit;
   entry = select(in, dist, vfloat<P>(std::numeric_limits<float>::infinity()));
-  return movemask(in) & p.live;
+  return movemask(in);
 }
 // [ch09-packet-node]
 
@@ -183,6 +198,8 @@ template <int P, int N, int M, bool kOcclusion>
 void trace_packet(const BVHN<N>& bvh, const Ray* rays, RayPacket<P>& p, Hit* hits, uint8_t* blocked) {
   using Leaf = LeafIntersector<TriangleMLayout<M>, MoellerTrumbore, true>;
   StatsCounter<false> no_stats;
+  // A copy the compiler may keep in registers: nothing the traversal calls can reach it.
+  const PacketBox<P> box = p.box;
   // Lanes that enter a subtree few enough to go alone: each ray through it with chapter 3's
   // traversal, from its closest hit so far, and the subtree is not pushed for the packet.
   auto alone = [&](NodeRef child, uint32_t mask) {
@@ -227,7 +244,7 @@ void trace_packet(const BVHN<N>& bvh, const Ray* rays, RayPacket<P>& p, Hit* hit
       for (int c = 0; c < N; ++c) {
         // An unused slot (or an empty leaf) holds nothing: no box test.
         if (node.children[c] == kEmptyLeaf) continue;
-        const uint32_t mask = enter_child<P, N>(node, c, p, entry[c]);
+        const uint32_t mask = enter_child<P, N>(node, c, box, p.box_tfar, entry[c]) & p.live;
         if (mask == 0) continue;
         if (std::popcount(mask) <= kAloneLanes) {
           alone(node.children[c], mask);
