@@ -69,10 +69,10 @@ struct RayPacket {
 };
 
 /// Loads `count` rays (at most P, all valid, all of octant `octant`) into a packet. The rays'
-/// fields are gathered into lanes (the lanes past `count` repeat the first ray), and each value
-/// is then made for all lanes at once by the operations make_bvhn_ray applies to one ray: an
-/// IEEE operation rounds the same in a lane as in a scalar, so every lane holds its single
-/// ray's values bit for bit.
+/// fields are gathered into lanes (the lanes past `count` repeat the first ray), and the values
+/// are then made for all lanes at once (all but the widened tfar, chapter 2's function of one
+/// float) by the operations make_bvhn_ray applies to one ray: an IEEE operation rounds the same
+/// in a lane as in a scalar, so every lane holds its single ray's values bit for bit.
 template <int P, int N>
 RTK_INLINE RayPacket<P> make_packet(const Ray* rays, int count, uint32_t octant) {
   constexpr float kInf = std::numeric_limits<float>::infinity(), kMax = std::numeric_limits<float>::max();
