@@ -436,12 +436,30 @@ section_embree_build() { # RTK's default build against Embree's on one and two t
   cat book/embree_build_threads.md
 }
 
+section_embree_second() { # RTK's default kernels and build against Embree once more, for the standing on a second machine
+  build bench_embree
+  local meshes="" f
+  if [ -d "$SCENES" ]; then
+    while read -r f; do
+      [ -f "$SCENES/$f" ] && meshes="$meshes${meshes:+,}$SCENES/$f"
+    done < bench/embree/meshes.txt
+  else
+    meshes=$SCENES
+  fi
+  # The default structure on the two widest ISAs (AVX-512 where the CPU has it), sorted and as
+  # given, with Embree's own speed on the rays in RTK's order.
+  RTK_SCENES=$meshes gbench embree_second "$B/bench/bench_embree" --procedural=0 \
+    --benchmark_filter='^(build/[^/]*/(embree|rtk:bvh8[.]objectsplit:triangle8[.]moeller)|trace/[^/]*/[^/]*/(embree|embree:rtk-order|rtk:(avx2|avx512):bvh8[.]objectsplit:triangle8[.]moeller(:given)?))/'
+  table embree_second book/embree_second.md python3 bench/embree/summary.py standing "$OUT/embree_second.json"
+  table embree_second book/embree_second_build.md python3 bench/embree/summary.py build "$OUT/embree_second.json"
+}
+
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure. ch14_path_loop is run
 # only when named: it builds the path loop of an earlier commit to compare with.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
-       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build)
+       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_second)
 
 # --- the machine ------------------------------------------------------------------------------
 
