@@ -96,8 +96,10 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = Exit
     r.far_offset_z = vfloat<N>(far_offset.z);
     // [ch03-fused-ray]
   }
-  r.tnear = vfloat<N>(ray.tnear > -kMax ? ray.tnear : -kMax);
-  r.tfar = vfloat<N>(conservative_tfar(ray.tfar, widening != ExitWidening::none));
+  // + 0 turns -0 into +0, which compare equal as floats; the `fused` test compares the bits
+  // as integers, where they do not.
+  r.tnear = vfloat<N>((ray.tnear > -kMax ? ray.tnear : -kMax) + 0.0f);
+  r.tfar = vfloat<N>(conservative_tfar(ray.tfar, widening != ExitWidening::none) + 0.0f);
   // [ch03-near-far-offsets]
   // Rows are N floats; the two rows of an axis are adjacent, lower first.
   constexpr size_t kRow = sizeof(float) * N;
@@ -111,7 +113,7 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = Exit
 /// Lowers the far end of the ray's interval after a hit.
 template <int N>
 RTK_INLINE void shorten(BvhNRay<N>& r, float tfar, bool conservative = true) {
-  r.tfar = vfloat<N>(conservative_tfar(tfar, conservative));
+  r.tfar = vfloat<N>(conservative_tfar(tfar, conservative) + 0.0f);  // -0 as +0 (make_bvhn_ray)
 }
 
 /// Tests the ray against the N children of a node, its exits widened as W says (the ray was
@@ -156,6 +158,22 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
     ny = min(ly, uy), fy = max(ly, uy);
     nz = min(lz, uz), fz = max(lz, uz);
     // [ch03-box-minmax]
+  }
+  if constexpr (W == ExitWidening::fused) {
+    // [ch03-box-integer]
+    // The fused distances are never NaN (a finite reciprocal and offset; an empty slot's
+    // infinite planes give infinities), and the interval starts at tnear >= +0. Compared as
+    // signed integers, two floats keep their order where one is >= +0, and every negative
+    // float (-0 included) is below every one that is not. So the largest entry, which is
+    // >= tnear, is the same as integers, and it lies beyond an exit as integers exactly when
+    // it does as floats, whichever exit is the least of several negative ones. Integer
+    // minimum, maximum and comparison take one cycle where their float forms take up to
+    // four, on the chain from a node's bytes to the next node.
+    const vint<N> entry = max(max(as_int(nx), as_int(ny)), max(as_int(nz), as_int(r.tnear)));
+    const vint<N> exit = min(min(as_int(fx), as_int(fy)), min(as_int(fz), as_int(r.tfar)));
+    dist = as_float(entry);
+    return movemask(entry > exit) ^ ((1u << N) - 1);
+    // [ch03-box-integer]
   }
   // [ch03-box-combine]
   // The ray's own limits come last: where a slab gives 0 * inf = NaN (a ray lying in the
@@ -421,7 +439,7 @@ RTK_INLINE bool traverse_bvhn(const BVHN<N>& bvh, NodeRef from, const Ray& ray, 
     return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, after_min>(bvh, from, ray, hit, stats);
   else if (!(ray.tnear >= 0.0f))
     return traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, after_min>(bvh, from, ray, hit, stats);
-  else if constexpr (kFusedBoxTest && !kOcclusion)
+  else if constexpr (kFusedBoxTest)
     return fused_applies(ray)
                ? traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, fused>(bvh, from, ray, hit, stats)
                : traverse_bvhn_widened<N, Leaf, T, kOcclusion, kStats, folded>(bvh, from, ray, hit, stats);
