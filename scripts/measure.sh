@@ -64,6 +64,20 @@ table() {
   rm -f "$file.tmp"
 }
 
+# embree_meshes: the real meshes of the Embree comparison (bench/embree/meshes.txt) that the
+# scene folder holds, comma-separated, or RTK_SCENES itself where it names files, not a folder.
+embree_meshes() {
+  local meshes="" f
+  if [ -d "$SCENES" ]; then
+    while read -r f; do
+      [ -f "$SCENES/$f" ] && meshes="$meshes${meshes:+,}$SCENES/$f"
+    done < bench/embree/meshes.txt
+  else
+    meshes=$SCENES
+  fi
+  echo "$meshes"
+}
+
 have_scenes() {
   [ -d "$SCENES" ] || { echo "  (no $SCENES: the real meshes are skipped)"; return 1; }
 }
@@ -408,14 +422,8 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
 
 section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
   build bench_embree
-  local meshes="" f t size round runs=()
-  if [ -d "$SCENES" ]; then
-    while read -r f; do
-      [ -f "$SCENES/$f" ] && meshes="$meshes${meshes:+,}$SCENES/$f"
-    done < bench/embree/meshes.txt
-  else
-    meshes=$SCENES
-  fi
+  local meshes t size round runs=()
+  meshes=$(embree_meshes)
   # Two rounds, each on one thread and then on two: build times of the large scenes move with
   # the price of fresh memory on a shared machine, and the table gives the range.
   for round in 1 2; do
@@ -438,14 +446,8 @@ section_embree_build() { # RTK's default build against Embree's on one and two t
 
 section_embree_second() { # RTK's default kernels and build against Embree once more, for the standing on a second machine
   build bench_embree
-  local meshes="" f
-  if [ -d "$SCENES" ]; then
-    while read -r f; do
-      [ -f "$SCENES/$f" ] && meshes="$meshes${meshes:+,}$SCENES/$f"
-    done < bench/embree/meshes.txt
-  else
-    meshes=$SCENES
-  fi
+  local meshes
+  meshes=$(embree_meshes)
   # The default structure on the two widest ISAs (AVX-512 where the CPU has it), sorted and as
   # given, with Embree's own speed on the rays in RTK's order.
   RTK_SCENES=$meshes gbench embree_second "$B/bench/bench_embree" --procedural=0 \
@@ -455,8 +457,9 @@ section_embree_second() { # RTK's default kernels and build against Embree once 
 }
 
 # A full run, in the book's order. A section may run parts that are sections of their own
-# (ch04 runs ch04_bins): those can be named alone, to remake one figure. ch14_path_loop is run
-# only when named: it builds the path loop of an earlier commit to compare with.
+# (ch04 runs ch04_bins): those can be named alone, to remake one figure. Two are run only when
+# named: ch14_path_loop builds the path loop of an earlier commit to compare with, and
+# embree_second is the Embree comparison's part for a second machine.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
        ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_second)
