@@ -82,11 +82,16 @@ RTK_INLINE float folded_reciprocal(float neg_rdir) { return neg_rdir * (1.0f + k
 /// difference of plane and origin times rdir rounded once. That is one rounding fewer than the
 /// `folded` test's subtraction and product, and kExitWidening, which covers those, covers this.
 /// Only for offsets that are finite: an axis-parallel ray's reciprocal is infinite, and its
-/// product with the plane minus an infinite offset would be infinity minus infinity.
+/// product with the plane minus an infinite offset would be infinity minus infinity. Never
+/// zero: where the move lands on 0 (q is minus the margin, or the margin), the offset goes one
+/// smallest normal float further the same way, so that no slab distance is -0, which equals +0
+/// as a float but not in chapter 3's comparisons of the bits as integers.
 RTK_INLINE float fused_offset(float org, float rdir, bool near) {
+  constexpr float kMin = std::numeric_limits<float>::min();
   const float q = org * rdir;
-  const float margin = std::max(std::fabs(q) * (4 * 0x1p-24f), std::numeric_limits<float>::min());
-  return near ? q + margin : q - margin;
+  const float margin = std::max(std::fabs(q) * (4 * 0x1p-24f), kMin);
+  const float offset = near ? q + margin : q - margin;
+  return offset != 0.0f ? offset : near ? kMin : -kMin;
 }
 // [ch02-fused-offset]
 

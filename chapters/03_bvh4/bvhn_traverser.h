@@ -162,7 +162,8 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
   if constexpr (W == ExitWidening::fused) {
     // [ch03-box-integer]
     // The fused distances are never NaN (a finite reciprocal and offset; an empty slot's
-    // infinite planes give infinities), and the interval starts at tnear >= +0. Compared as
+    // infinite planes give infinities) nor -0 (the offset is never 0), and the interval
+    // starts at tnear >= +0. Compared as
     // signed integers, two floats keep their order where one is >= +0, and every negative
     // float (-0 included) is below every one that is not. So the largest entry, which is
     // >= tnear, is the same as integers, and it lies beyond an exit as integers exactly when
