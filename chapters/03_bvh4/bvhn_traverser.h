@@ -163,13 +163,12 @@ RTK_INLINE uint32_t intersect_node(const NodeN<N>& node, const BvhNRay<N>& r, vf
     // [ch03-box-integer]
     // The fused distances are never NaN (a finite reciprocal and offset; an empty slot's
     // infinite planes give infinities) nor -0 (the offset is never 0), and the interval
-    // starts at tnear >= +0. Compared as
-    // signed integers, two floats keep their order where one is >= +0, and every negative
-    // float (-0 included) is below every one that is not. So the largest entry, which is
-    // >= tnear, is the same as integers, and it lies beyond an exit as integers exactly when
-    // it does as floats, whichever exit is the least of several negative ones. Integer
-    // minimum, maximum and comparison take one cycle where their float forms take up to
-    // four, on the chain from a node's bytes to the next node.
+    // starts at tnear >= +0. Compared as signed integers, two floats keep their order where
+    // one is >= +0, and every negative float (-0 included) is below every one that is not.
+    // So the largest entry, which is >= tnear, is the same as integers, and it lies beyond an
+    // exit as integers exactly when it does as floats, whichever exit is the least of several
+    // negative ones. Integer minimum, maximum and comparison take one cycle where their float
+    // forms take up to four, on the chain from a node's bytes to the next node.
     const vint<N> entry = max(max(as_int(nx), as_int(ny)), max(as_int(nz), as_int(r.tnear)));
     const vint<N> exit = min(min(as_int(fx), as_int(fy)), min(as_int(fz), as_int(r.tfar)));
     dist = as_float(entry);

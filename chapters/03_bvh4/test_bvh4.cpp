@@ -113,7 +113,10 @@ TEST_CASE_TEMPLATE("ch03: every ISA matches the scalar kernels bit for bit, stat
         CHECK(test::first_difference(trace(isa, bvh, config.tricks, c.rays, &stats), reference) == -1);
         CHECK(trace_occlusion(isa, bvh, config.tricks, c.rays, &occ_stats) == reference_occ);
         if (fused_boxes && (isa == Isa::avx2 || isa == Isa::avx512)) {
-          if (!fused_stats) fused_stats = stats, fused_occ_stats = occ_stats;
+          if (!fused_stats) {
+            fused_stats = stats;
+            fused_occ_stats = occ_stats;
+          }
           CHECK(stats == *fused_stats);
           CHECK(occ_stats == *fused_occ_stats);
           check_close_stats(stats, ref_stats);
