@@ -24,14 +24,18 @@ constexpr int kGrowWidth = kNativeWidth >= 8 ? 8 : 4;
 
 /// A primitive as the bins take it, in Bin's layout: its box (lower corner, negated upper
 /// corner) and its centroid twice (as is, negated), eight floats each, in registers of
-/// W floats (kGrowWidth). It is made once and grows three bins.
+/// W floats (kGrowWidth). Lane 3 of the lower corner, the bin's count, is +infinity: a
+/// minimum then gives the bin's lane back, and the count is added to it afterwards. It is made
+/// once and grows three bins.
 template <int W>
 struct BinEntry {
   static constexpr int kParts = 8 / W;
   vfloat<W> box[kParts], centroid[kParts];
 
   RTK_INLINE explicit BinEntry(const PrimLanes& p) {
-    const vfloat<4> lower = lanes(p.lower), neg_upper = -lanes(p.upper), c = lanes(p.centroid);
+    const vint<4> count_lane = select(vint<4>::iota() == vint<4>(3), vint<4>(0x7F800000), vint<4>(0));
+    const vfloat<4> lower = as_float(as_int(lanes(p.lower)) | count_lane);
+    const vfloat<4> neg_upper = -lanes(p.upper), c = lanes(p.centroid);
     if constexpr (W == 8) {
       box[0] = vfloat<8>(lower, neg_upper);
       centroid[0] = vfloat<8>(c, -c);
@@ -47,30 +51,34 @@ struct BinEntry {
   }
 };
 
-/// Grows bin `b` by a primitive: every field is a minimum (Bin keeps the upper corners negated),
-/// kGrowWidth floats at a time. The primitive is the first operand, as in a minimum's rule for
-/// equal values, the one that gives the bin its own value back. The loads and stores do not
-/// ask for alignment: a Bin is aligned to its cache line, but containers are free to place
-/// Bins otherwise, and on aligned data the unaligned forms cost nothing more.
-RTK_INLINE void grow(Bin& b, const BinEntry<kGrowWidth>& e) {
+/// Grows bin `b` by a primitive: every bound is a minimum (Bin keeps the upper corners negated),
+/// kGrowWidth floats at a time, and the count in lane 3 goes up by one, an integer addition
+/// in the register that holds the lower corner. The primitive is the first operand, as in a
+/// minimum's rule for equal values, the one that gives the bin its own value back (its +inf
+/// gives back the count). The loads and stores do not ask for alignment: a Bin is aligned to
+/// its cache line, but containers are free to place Bins otherwise, and on aligned data the
+/// unaligned forms cost nothing more.
+RTK_INLINE void grow(Bin& b, const BinEntry<kGrowWidth>& e, vint<kGrowWidth> one_in_lane3) {
   float* box = reinterpret_cast<float*>(&b.lower);
   float* centroid = reinterpret_cast<float*>(&b.cent_lower);
   using V = vfloat<kGrowWidth>;
   for (int k = 0; k < BinEntry<kGrowWidth>::kParts; ++k) {
-    min(e.box[k], V::loadu(box + k * kGrowWidth)).storeu(box + k * kGrowWidth);
+    V grown = min(e.box[k], V::loadu(box + k * kGrowWidth));
+    if (k == 0) grown = as_float(as_int(grown) + one_in_lane3);
+    grown.storeu(box + k * kGrowWidth);
     min(e.centroid[k], V::loadu(centroid + k * kGrowWidth)).storeu(centroid + k * kGrowWidth);
   }
 }
 
 /// Drops a primitive into its bin on each axis.
 RTK_INLINE void add(Bins& bins, const PrimLanes& p, const BinMapping& map) {
+  using VI = vint<kGrowWidth>;
+  const VI one_in_lane3 = select(VI::iota() == VI(3), VI(1), VI(0));
   const sah::Ints4 i = map.bins(p.centroid);
-  const int i0 = i[0], i1 = i[1], i2 = i[2];
   const BinEntry<kGrowWidth> e(p);
-  grow(bins.bin[0][i0], e);
-  grow(bins.bin[1][i1], e);
-  grow(bins.bin[2][i2], e);
-  ++bins.count[i0][0], ++bins.count[i1][1], ++bins.count[i2][2];
+  grow(bins.bin[0][i[0]], e, one_in_lane3);
+  grow(bins.bin[1][i[1]], e, one_in_lane3);
+  grow(bins.bin[2][i[2]], e, one_in_lane3);
 }
 // [ch04-grow-bin]
 

@@ -46,7 +46,7 @@ Box3f bin_centroid_bounds(const Bins& bins, int axis, int first, int last) {
 
 uint32_t bin_count(const Bins& bins, int axis, int first, int last) {
   uint32_t count = 0;
-  for (int i = first; i < last; ++i) count += bins.count[i][axis];
+  for (int i = first; i < last; ++i) count += bins.bin[axis][i].count();
   return count;
 }
 
@@ -70,11 +70,14 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   if (!(largest < 0x1p40f)) std::frexp(largest, &exponent);
   const float s = exponent == 0 ? 1.0f : std::ldexp(1.0f, -std::clamp(exponent, -125, 127));
   // Half the areas of the three boxes [l[a], u[a]], one per lane, after scaling: each box's
-  // products dx dy, dy dz, dz dx side by side, then summed across by transposing.
-  auto areas = [s](const Lanes4 (&l)[3], const Lanes4 (&u)[3]) {
+  // products dx dy, dy dz, dz dx side by side, then summed across by transposing. Lane 3 of
+  // the lower corners holds the bins' counts, so the extents' lane 3 is set to 0 first.
+  const Ints4 xyz{-1, -1, -1, 0};
+  auto areas = [s, xyz](const Lanes4 (&l)[3], const Lanes4 (&u)[3]) {
     Lanes4 t[3];
     for (int a = 0; a < 3; ++a) {
-      const Lanes4 d = s == 1.0f ? u[a] - l[a] : u[a] * s - l[a] * s;
+      const Lanes4 extent = s == 1.0f ? u[a] - l[a] : u[a] * s - l[a] * s;
+      const Lanes4 d = reinterpret_cast<Lanes4>(reinterpret_cast<Ints4>(extent) & xyz);
       t[a] = d * __builtin_shufflevector(d, d, 1, 2, 0, 3);  // lane 3: 0 * 0
     }
     const Lanes4 zero{0, 0, 0, 0};
@@ -88,10 +91,13 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   // 2^31 primitives or more (64 GiB of references) would be priced wrongly, and get a poorer
   // split, never a wrong tree: the chosen split's count and cost are exact below.
   typedef uint32_t Counts4 __attribute__((vector_size(16)));
+  // The three axes' counts of bin i side by side, from lane 3 of each axis's lower corner.
+  const Counts4 count_base{Bin::kCountBase, Bin::kCountBase, Bin::kCountBase, 0};
   auto counts = [&](int i) {
-    Counts4 c;
-    std::memcpy(&c, bins.count[i], sizeof c);
-    return c;
+    const auto lane3 = [&](int axis) { return reinterpret_cast<Counts4>(bins.bin[axis][i].lower); };
+    const Counts4 c01 = __builtin_shufflevector(lane3(0), lane3(1), 3, 7, 3, 7);
+    const Counts4 c = __builtin_shufflevector(c01, lane3(2), 0, 1, 7, 4);
+    return (c - count_base) & reinterpret_cast<Counts4>(xyz);
   };
   const Counts4 none{0, 0, 0, 0};
   // A side of c primitives costs ceil(c / leaf_block) tests: (c + leaf_block - 1) >> shift.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -113,13 +114,25 @@ struct BinMapping {
 
 // [ch04-bin-layout]
 /// One bin: the bounds of the boxes and of the centroids that fell into it, 64 bytes (a cache
-/// line). The upper corners are kept negated, -max(x) being min(-x), so that every field grows
-/// by a minimum: a box is eight consecutive floats (lower, then negated upper; lane 3 of each
-/// is 0), which one 256-bit minimum grows at once (bin_kernels.cpp). Plain data without
-/// constructors, so that a Bins object costs nothing until reset() touches the bins in use.
+/// line). The upper corners are kept negated, -max(x) being min(-x), so that every bound grows
+/// by a minimum: a box is eight consecutive floats (lower, then negated upper), which one
+/// 256-bit minimum grows at once (bin_kernels.cpp). Lane 3 of `lower`, which no coordinate
+/// uses, holds the bin's count: its bits as an integer are kCountBase plus the count. The pass
+/// that grows the box adds one to those bits with an integer addition in the same register,
+/// so that counting costs no memory access of its own. The base is the bits of 1.0f, which
+/// keeps the lane a normal float (until a billion primitives fall into one bin): the float
+/// operations that read whole registers, minimums and the sweep's areas, ignore the lane's
+/// value but would slow down on a subnormal one. Plain data without constructors, so that a
+/// Bins object costs nothing until reset() touches the bins in use.
 struct alignas(64) Bin {
-  Lanes4 lower, neg_upper;            ///< bounds of the primitives' boxes
+  static constexpr uint32_t kCountBase = std::bit_cast<uint32_t>(1.0f);
+  Lanes4 lower, neg_upper;            ///< bounds of the primitives' boxes; lower[3]: the count
   Lanes4 cent_lower, neg_cent_upper;  ///< bounds of their centroids
+
+  /// How many primitives fell into the bin.
+  uint32_t count() const { return std::bit_cast<uint32_t>(lower[3]) - kCountBase; }
+  /// Sets the count; lower[3] is written nowhere else but by the binning passes' additions.
+  void set_count(uint32_t n) { lower[3] = std::bit_cast<float>(kCountBase + n); }
 };
 static_assert(sizeof(Bin) == 64, "one bin per cache line");
 // [ch04-bin-layout]
@@ -132,9 +145,6 @@ static_assert(sizeof(Bin) == 64, "one bin per cache line");
 struct Bins {
   int num_bins = 0;
   Bin bin[3][kMaxSahBins];
-  /// How many primitives fell into bin i on each axis: count[i][axis] (lane 3 stays 0), so
-  /// that the sweep reads the three axes' counts of a bin with one load.
-  alignas(16) uint32_t count[kMaxSahBins][4];
 
   /// Empties the first `n` bins on every axis.
   void reset(int n) {
@@ -142,8 +152,10 @@ struct Bins {
     constexpr float f = std::numeric_limits<float>::infinity();
     const Lanes4 inf{f, f, f, f};
     for (int axis = 0; axis < 3; ++axis)
-      for (int i = 0; i < n; ++i) bin[axis][i] = Bin{inf, inf, inf, inf};
-    for (int i = 0; i < n; ++i) count[i][0] = count[i][1] = count[i][2] = count[i][3] = 0;
+      for (int i = 0; i < n; ++i) {
+        bin[axis][i] = Bin{inf, inf, inf, inf};
+        bin[axis][i].set_count(0);
+      }
   }
   /// Adds another set's bins (same mapping) to these. Minimum and integer addition do not
   /// depend on the order they are applied in, so the merged bins are the same whichever
@@ -153,11 +165,12 @@ struct Bins {
       for (int i = 0; i < num_bins; ++i) {
         const Bin& o = other.bin[axis][i];
         Bin& b = bin[axis][i];
+        const uint32_t count = b.count() + o.count();
         b.lower = min4(o.lower, b.lower);
         b.neg_upper = min4(o.neg_upper, b.neg_upper);
         b.cent_lower = min4(o.cent_lower, b.cent_lower);
         b.neg_cent_upper = min4(o.neg_cent_upper, b.neg_cent_upper);
-        count[i][axis] += other.count[i][axis];
+        b.set_count(count);
       }
   }
 };

@@ -282,6 +282,40 @@ TEST_CASE(
   CHECK(std::count(count.begin(), count.end(), 1) == std::ptrdiff_t(n));
 }
 
+// [ch04-test-bin-count]
+TEST_CASE("ch04: a bin counts its primitives in the spare lane of its lower corner, on every ISA") {
+  TriangleMesh mesh = test::make_random_soup(2000, 43);
+  test::add_degenerate_triangles(mesh, 100, 44);
+  const std::vector<PrimRef> refs = make_prim_refs(mesh);
+  const uint32_t n = uint32_t(refs.size());
+  Box3f cent;
+  for (const auto& r : refs) cent.extend(centroid(r));
+  const BinMapping map(cent, 16);
+  for (Isa isa : supported_isas()) {
+    CAPTURE(isa_name(isa));
+    // Two halves binned apart and merged count what one pass over all of them counts.
+    auto bins = std::make_unique<Bins>(), half = std::make_unique<Bins>();
+    bins->reset(16);
+    half->reset(16);
+    CHECK(bins->bin[1][5].count() == 0);
+    RTK_PICK_ISA(isa, bin_prims)(refs.data(), n / 2, map, *bins);
+    RTK_PICK_ISA(isa, bin_prims)(refs.data() + n / 2, n - n / 2, map, *half);
+    bins->merge(*half);
+    for (int axis = 0; axis < 3; ++axis) {
+      CAPTURE(axis);
+      std::vector<uint32_t> expected(16, 0);
+      for (const PrimRef& r : refs) ++expected[size_t(map.bin(centroid(r)[axis], axis))];
+      for (int i = 0; i < 16; ++i) {
+        CHECK(bins->bin[axis][i].count() == expected[size_t(i)]);
+        // A normal float, so that whole-register float operations never meet a subnormal.
+        CHECK(std::isnormal(bins->bin[axis][i].lower[3]));
+      }
+      CHECK(bin_count(*bins, axis, 0, 16) == n);
+    }
+  }
+}
+// [ch04-test-bin-count]
+
 // [ch04-test-bin-kernels]
 TEST_CASE("ch04: every ISA's binning passes fill the scalar variant's bins and order") {
   // Real boxes and corner cases: degenerate triangles (flat boxes, equal centroids), zeros
