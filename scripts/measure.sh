@@ -420,31 +420,38 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
   run_section embree_build
 }
 
-section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
-  build bench_embree
-  local meshes t size round runs=()
+# embree_build_threads SECTION FILE: RTK's default build paired with Embree's on one thread and
+# on two, on the real meshes and on the generated terrain scaled to 1M, 4M and 16M triangles, in
+# two rounds; the table goes to FILE.
+embree_build_threads() {
+  local section=$1 file=$2 meshes t size round runs=()
   meshes=$(embree_meshes)
   # Two rounds, each on one thread and then on two: build times of the large scenes move with
   # the price of fresh memory on a shared machine, and the table gives the range.
   for round in 1 2; do
     for t in 1 2; do
-      RTK_SCENES=$meshes gbench embree_build_meshes_${t}_$round "$B/bench/bench_embree" --builds-only \
+      RTK_SCENES=$meshes gbench ${section}_meshes_${t}_$round "$B/bench/bench_embree" --builds-only \
         --procedural=0 --threads=$t --benchmark_min_time=1
-      runs+=("$OUT/embree_build_meshes_${t}_$round.json")
+      runs+=("$OUT/${section}_meshes_${t}_$round.json")
       # --size scales the generated terrain (131,072 triangles) by 8, 32 and 128; the larger the
       # build, the longer each run, so that every pair is timed at least three times.
       for size in 8 32 128; do
-        RTK_SCENES= gbench embree_build_terrain${size}_${t}_$round "$B/bench/bench_embree" --builds-only \
+        RTK_SCENES= gbench ${section}_terrain${size}_${t}_$round "$B/bench/bench_embree" --builds-only \
           --procedural=terrain --size=$size --threads=$t --benchmark_min_time=$((size / 8 + 2))
-        runs+=("$OUT/embree_build_terrain${size}_${t}_$round.json")
+        runs+=("$OUT/${section}_terrain${size}_${t}_$round.json")
       done
     done
   done
-  table embree_build book/embree_build_threads.md python3 bench/embree/summary.py threads "${runs[@]}"
-  cat book/embree_build_threads.md
+  table "$section" "$file" python3 bench/embree/summary.py threads "${runs[@]}"
+  cat "$file"
 }
 
-section_embree_second() { # RTK's default kernels and build against Embree once more, for the standing on a second machine
+section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
+  build bench_embree
+  embree_build_threads embree_build book/embree_build_threads.md
+}
+
+section_embree_second() { # RTK's default kernels and builds (one and two threads, meshes and terrains) against Embree once more, for the standing on a second machine
   build bench_embree
   local meshes
   meshes=$(embree_meshes)
@@ -454,6 +461,7 @@ section_embree_second() { # RTK's default kernels and build against Embree once 
     --benchmark_filter='^(build/[^/]*/(embree|rtk:bvh8[.]objectsplit:triangle8[.]moeller)|trace/[^/]*/[^/]*/(embree|embree:rtk-order|rtk:(avx2|avx512):bvh8[.]objectsplit:triangle8[.]moeller(:given)?))/'
   table embree_second book/embree_second.md python3 bench/embree/summary.py standing "$OUT/embree_second.json"
   table embree_second book/embree_second_build.md python3 bench/embree/summary.py build "$OUT/embree_second.json"
+  embree_build_threads embree_second book/embree_second_threads.md
 }
 
 # A full run, in the book's order. A section may run parts that are sections of their own
