@@ -3,6 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "11_sampling/camera.h"
+#include "11_sampling/distribution.h"
+#include "11_sampling/rng.h"
 #include "11_sampling/sampler.h"
 #include "11_sampling/sobol.h"
 
@@ -52,6 +54,27 @@ void BM_sobol_point(benchmark::State& state) {
   state.SetLabel(fast ? "fast" : "definition");
 }
 BENCHMARK(BM_sobol_point)->Arg(0)->Arg(1);
+
+// A bin drawn from a table of N values, as a renderer chooses one of N lights per bounce: the
+// sample points are random, so a search whose comparisons branch guesses half of them wrong.
+void BM_discrete_sample(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Pcg32 rng(5);
+  std::vector<float> values(n);
+  for (float& v : values) v = 0.5f + rng.next_float();
+  const Distribution1D table(values);
+  float pmf_sum = 0;
+  int bin_sum = 0;
+  for (auto _ : state) {
+    float pmf;
+    bin_sum += table.sample_discrete(rng.next_float(), &pmf);
+    pmf_sum += pmf;
+  }
+  benchmark::DoNotOptimize(bin_sum);
+  benchmark::DoNotOptimize(pmf_sum);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_discrete_sample)->Arg(2)->Arg(16)->Arg(1024);
 
 void BM_camera_ray(benchmark::State& state) {
   CameraParams p;

@@ -24,7 +24,6 @@ Distribution1D::Distribution1D(std::span<const float> values)
     std::fill(func_.begin(), func_.end(), 1.0f);
     sum = n;
   }
-  norm_ = sum;
   cdf_.resize(n + 1);
   double running = 0.0;
   cdf_[0] = 0.0f;
@@ -33,46 +32,63 @@ Distribution1D::Distribution1D(std::span<const float> values)
     cdf_[i + 1] = static_cast<float>(running / sum);
   }
   cdf_[n] = 1.0f;
+  // In double, as the bins' values were summed: a long table's small bins keep their digits.
+  density_.resize(n);
+  mass_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    density_[i] = static_cast<float>(static_cast<double>(func_[i]) * n / sum);
+    mass_[i] = static_cast<float>(static_cast<double>(func_[i]) / sum);
+  }
 }
 
 // [ch11-distribution-sample]
+// The bin i with cdf[i] <= u < cdf[i+1]: the last lower border at most u. An empty bin's
+// border equals the next one's, so it is never the last, and never chosen. Each step halves
+// the range by a conditional move rather than a branch: u is random, and a branch on it would
+// be guessed wrong half the time, each time discarding the work the processor began.
+int Distribution1D::find_bin(float u) const {
+  const float* first = cdf_.data();
+  size_t count = func_.size();  // the answer lies in [first, first + count)
+  while (count > 1) {
+    const size_t half = count / 2;
+    first = first[half] <= u ? first + half : first;
+    count -= half;
+  }
+  return static_cast<int>(first - cdf_.data());
+}
+
 float Distribution1D::sample_continuous(float u, float* pdf, int* bin) const {
-  // Find the bin i with cdf[i] <= u < cdf[i+1]; zero-width bins are never chosen, because
-  // upper_bound skips every entry equal to u.
-  const int n = size();
-  const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-  const int i = std::clamp(static_cast<int>(it - cdf_.begin()) - 1, 0, n - 1);
+  const int i = find_bin(u);
   // Place x inside the bin by the fraction of the bin's probability that u covers.
   const float width = cdf_[i + 1] - cdf_[i];
   float offset = width > 0.0f ? (u - cdf_[i]) / width : 0.5f;
   offset = std::clamp(offset, 0.0f, 1.0f);
   const float x =
-      std::min((static_cast<float>(i) + offset) / static_cast<float>(n), 0x1.fffffep-1f);
+      std::min((static_cast<float>(i) + offset) / static_cast<float>(size()), 0x1.fffffep-1f);
   // The density comes from the bin's value, not from the difference of two CDF entries,
   // which loses all precision for small bins near the end of a long table.
-  if (pdf) *pdf = static_cast<float>(static_cast<double>(func_[i]) * n / norm_);
+  if (pdf) *pdf = density_[i];
   if (bin) *bin = i;
   return x;
 }
 // [ch11-distribution-sample]
 
 int Distribution1D::sample_discrete(float u, float* pmf_out) const {
-  int bin = 0;
-  sample_continuous(u, nullptr, &bin);
-  if (pmf_out) *pmf_out = pmf(bin);
-  return bin;
+  const int i = find_bin(u);
+  if (pmf_out) *pmf_out = mass_[i];
+  return i;
 }
 
 float Distribution1D::pdf(float x) const {
   if (!(x >= 0.0f && x < 1.0f)) return 0.0f;
   const int n = size();
   const int i = std::min(static_cast<int>(x * static_cast<float>(n)), n - 1);
-  return static_cast<float>(static_cast<double>(func_[i]) * n / norm_);
+  return density_[i];
 }
 
 float Distribution1D::pmf(int i) const {
   if (i < 0 || i >= size()) return 0.0f;
-  return static_cast<float>(static_cast<double>(func_[i]) / norm_);
+  return mass_[i];
 }
 
 namespace {

@@ -11,7 +11,8 @@
 namespace rtk {
 
 /// A piecewise-constant density on [0, 1) with n equal bins, proportional to non-negative
-/// bin values f[i]. Sampling inverts the cumulative distribution by binary search.
+/// bin values f[i]. Sampling inverts the cumulative distribution by a binary search without
+/// branches; each bin's density and probability are computed once, when the table is built.
 /// If every value is zero the density is uniform (so that sampling never divides by zero);
 /// integral() still reports 0 so that callers can tell.
 class Distribution1D {
@@ -37,10 +38,13 @@ class Distribution1D {
   float pmf(int i) const;
 
  private:
-  std::vector<float> func_;  // bin values (uniform replacement when all are zero)
-  std::vector<float> cdf_;   // size n + 1, cdf_[0] = 0, cdf_[n] = 1
-  float integral_ = 0.0f;    // the true integral (0 for an all-zero function)
-  double norm_ = 1.0;        // the sum of func_, what densities divide by
+  int find_bin(float u) const;
+
+  std::vector<float> func_;     // bin values (uniform replacement when all are zero)
+  std::vector<float> cdf_;      // size n + 1, cdf_[0] = 0, cdf_[n] = 1
+  std::vector<float> density_;  // per bin: f[i] n / sum f, the density of its points
+  std::vector<float> mass_;     // per bin: f[i] / sum f, its probability
+  float integral_ = 0.0f;       // the true integral (0 for an all-zero function)
 };
 
 /// A piecewise-constant density on [0, 1)^2 over an nu x nv grid of values f[v * nu + u]:

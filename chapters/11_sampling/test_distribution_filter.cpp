@@ -44,6 +44,46 @@ TEST_CASE("ch11: a 1D distribution samples bins in proportion to their values") 
   CHECK(d.sample_discrete(0.6f) == 3);
 }
 
+// [ch11-test-distribution-search]
+TEST_CASE("ch11: the search picks the bin a linear scan of the cumulative sum picks") {
+  // Tables of 1 to 40 bins, a third of them empty, searched at random points and exactly at
+  // every bin's border. The reference walks the cumulative sum, built as the class builds it,
+  // and takes the last bin whose lower border is at most u: an empty bin's border equals the
+  // next one's, so it is never the last.
+  Pcg32 rng(11);
+  for (int n = 1; n <= 40; ++n) {
+    std::vector<float> f(n);
+    for (float& v : f) v = rng.next_float() < 0.3f ? 0.0f : rng.next_float() * 10.0f;
+    const Distribution1D d(f);
+    double sum = 0.0;
+    for (float v : f) sum += v;
+    std::vector<float> cdf(n + 1, 0.0f);
+    double running = 0.0;
+    for (int i = 0; i < n; ++i) cdf[i + 1] = static_cast<float>((running += f[i]) / sum);
+    cdf[n] = 1.0f;
+    std::vector<float> us;  // every border below 1 (a sample is always below 1)
+    for (float border : cdf)
+      if (border < 1.0f) us.push_back(border);
+    for (int k = 0; k < 64; ++k) us.push_back(rng.next_float());
+    for (float u : us) {
+      if (sum == 0.0) break;  // the all-zero table is the next test's
+      int expected = 0;
+      for (int i = 0; i < n; ++i)
+        if (cdf[i] <= u) expected = i;
+      float pmf = -1.0f;
+      CHECK(d.sample_discrete(u, &pmf) == expected);
+      CHECK(f[expected] > 0.0f);
+      CHECK(pmf == static_cast<float>(f[expected] / sum));
+      int bin = -1;
+      float pdf = -1.0f;
+      d.sample_continuous(u, &pdf, &bin);
+      CHECK(bin == expected);
+      CHECK(pdf == static_cast<float>(static_cast<double>(f[expected]) * n / sum));
+    }
+  }
+}
+// [ch11-test-distribution-search]
+
 TEST_CASE("ch11: degenerate distributions are handled, bad ones refused") {
   const std::vector<float> zero = {0, 0, 0};
   const Distribution1D d(zero);

@@ -1,5 +1,5 @@
 """Chapter 11's table of costs, from `ch11_bench` JSON: CPU time per pixel sample of each
-sampler and per camera ray of each camera.
+sampler, per bin drawn from a table and per camera ray of each camera.
 
     python3 bench_table.py ch11.json   # Markdown table on standard output"""
 import json
@@ -10,6 +10,9 @@ ROWS = [  # benchmark name, what it is
     ("BM_pixel_sample/1", "the same, Sobol (Owen-scrambled, padded)"),
     ("BM_sobol_point/0", "one Sobol 2D point, as defined (sobol_owen_reference)"),
     ("BM_sobol_point/1", "one Sobol 2D point, as the sampler computes it (sobol_owen)"),
+    ("BM_discrete_sample/2", "one bin of a table of 2 (a choice of light), random u"),
+    ("BM_discrete_sample/16", "one bin of a table of 16"),
+    ("BM_discrete_sample/1024", "one bin of a table of 1,024 (an environment map's row)"),
     ("BM_camera_ray/0", "pinhole camera ray"),
     ("BM_camera_ray/10", "thin-lens camera ray"),
 ]
