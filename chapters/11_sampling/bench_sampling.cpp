@@ -1,6 +1,8 @@
-// Chapter 11 benchmarks: the cost of a sample dimension (independent vs Owen-scrambled Sobol)
-// and of a camera ray. Run: build/chapters/11_sampling/ch11_bench
+// Chapter 11 benchmarks: the cost of a sample dimension (independent vs Owen-scrambled Sobol),
+// of a bin drawn from a table, and of a camera ray. Run: build/chapters/11_sampling/ch11_bench
 #include <benchmark/benchmark.h>
+
+#include <vector>
 
 #include "11_sampling/camera.h"
 #include "11_sampling/distribution.h"
