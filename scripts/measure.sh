@@ -192,9 +192,9 @@ section_ch04_bins() { # SAH: bins per axis against build speed and SAH cost; the
 section_ch05() { # spatial splits: build, references, SAH and speed against object splits, rtk trace on Sponza; then ch05_budget
   build ch05_bench rtk
   RTK_SCENES=$SCENES gbench ch05 "$B/chapters/05_spatial/ch05_bench" --benchmark_counters_tabular=true \
-    --benchmark_filter='^(build|trace|bins|overlap)/'
+    --benchmark_filter='^(build|trace|bins|overlap|min_leaves)/'
   local t
-  for t in build trace bins overlap; do
+  for t in build trace bins overlap min_leaves; do
     table ch05 chapters/05_spatial/ch05_$t.md python3 chapters/05_spatial/bench_tables.py $t "$OUT/ch05.json"
   done
   if have_scenes; then

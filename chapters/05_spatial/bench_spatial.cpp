@@ -149,16 +149,15 @@ void spatial_bins(benchmark::State& state, const Scene* scene, int bins) {
 }
 
 // [ch05-bench-overlap]
-/// Where to look for spatial splits: binned builds with min_overlap = `percent` / 100, one
+/// Where to look for spatial splits: binned builds with the pricing rules of `binned`, one
 /// thread. One iteration builds the object-split tree five times (it takes a few milliseconds,
 /// too short to time once) and the binned one once, timing each; then both trace the same
 /// diffuse rays (best ISA, BVH4, five rounds each, alternating). The counters are the binned
 /// build's time and its ratio to the object split's, the sets priced, the references per
 /// triangle, and the SAH and diffuse-ray speed relative to object splits.
-void overlap_rule(benchmark::State& state, const Scene* scene, int percent) {
-  SpatialBuildOptions object = options_for(Flavour::object), binned = options_for(Flavour::binned);
+void pricing_rule(benchmark::State& state, const Scene* scene, SpatialBuildOptions binned) {
+  SpatialBuildOptions object = options_for(Flavour::object);
   object.sah.threads = binned.sah.threads = 1;
-  binned.min_overlap = float(percent) / 100.0f;
   constexpr int kObjectBuilds = 5;
   double seconds[2] = {0, 0};
   SpatialBuildStats stats;
@@ -207,11 +206,22 @@ const bool registered = [] {
                                      &scene, bins)
             ->Unit(benchmark::kMillisecond)
             ->Iterations(2);
-    for (const int percent : {0, 5, 10, 20, 40})
+    for (const int percent : {0, 5, 10, 20, 40}) {
+      SpatialBuildOptions o = options_for(Flavour::binned);
+      o.min_overlap = float(percent) / 100.0f;
       benchmark::RegisterBenchmark(("overlap/" + scene.name + "/" + std::to_string(percent) + "%").c_str(),
-                                   overlap_rule, &scene, percent)
+                                   pricing_rule, &scene, o)
           ->Unit(benchmark::kMillisecond)
           ->Iterations(2);
+    }
+    for (const uint32_t leaves : {0u, 1u, 2u, 4u, 8u, 32u}) {
+      SpatialBuildOptions o = options_for(Flavour::binned);
+      o.min_leaves = leaves;
+      benchmark::RegisterBenchmark(("min_leaves/" + scene.name + "/" + std::to_string(leaves)).c_str(), pricing_rule,
+                                   &scene, o)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(2);
+    }
     // The budget: diffuse rays through binned-split trees with 10 % to 200 % more references.
     for (const float budget : {0.1f, 0.3f, 0.6f, 1.0f, 2.0f})
       benchmark::RegisterBenchmark(("budget/" + scene.name + "/" + std::to_string(int(budget * 100)) + "%").c_str(),

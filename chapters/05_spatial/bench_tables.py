@@ -3,7 +3,7 @@
 table at a time, so that the page can place each next to the prose about it.
 
     ch05_bench --benchmark_out=ch05.json --benchmark_out_format=json
-    python3 chapters/05_spatial/bench_tables.py build|trace|bins|budget|overlap ch05.json
+    python3 chapters/05_spatial/bench_tables.py build|trace|bins|budget|overlap|min_leaves ch05.json
     python3 chapters/05_spatial/bench_tables.py rtk TRACE.txt ... [COMPARE.txt]
 
 For `rtk`, each TRACE.txt is the JSON-line output of one `rtk trace` run, named
@@ -89,16 +89,25 @@ def budget_table(rows):
         print(f"| {p} % | " + " | ".join(cells) + " |")
 
 
-def overlap_table(rows):
-    print("| scene | min_overlap | build | build / object's | sets priced | refs/tri | SAH / object's | "
+def rule_table(rows, prefix, label, value):
+    """One row per scene and setting of a pricing rule (`prefix`/scene/setting)."""
+    print(f"| scene | {label} | build | build / object's | sets priced | refs/tri | SAH / object's | "
           "diffuse speed / object's |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
-    for scene in scenes_of(rows, "overlap"):
-        percents = sorted({int(n.split("/")[2].rstrip("%")) for n in rows if n.startswith(f"overlap/{scene}/")})
-        for p in percents:
-            b = rows[f"overlap/{scene}/{p}%"]
-            print(f"| {scene} | {p / 100:.2f} | {b['build_ms']:.0f} ms | {b['build_time']:.1f}x | {int(b['searches']):,} | "
+    for scene in scenes_of(rows, prefix):
+        settings = sorted({int(n.split("/")[2].rstrip("%")) for n in rows if n.startswith(f"{prefix}/{scene}/")})
+        for v in settings:
+            b = rows[f"{prefix}/{scene}/{v}" + ("%" if prefix == "overlap" else "")]
+            print(f"| {scene} | {value(v)} | {b['build_ms']:.0f} ms | {b['build_time']:.1f}x | {int(b['searches']):,} | "
                   f"{b['refs/tri']:.2f} | {b['sah']:.3f} | {b['diffuse_speed']:.2f} |")
+
+
+def overlap_table(rows):
+    rule_table(rows, "overlap", "min_overlap", lambda p: f"{p / 100:.2f}")
+
+
+def min_leaves_table(rows):
+    rule_table(rows, "min_leaves", "min_leaves", str)
 
 
 def json_lines(path):
@@ -132,7 +141,7 @@ def rtk_table(paths):
 
 
 TABLES = {"build": build_table, "trace": trace_table, "bins": bins_table, "budget": budget_table,
-          "overlap": overlap_table}
+          "overlap": overlap_table, "min_leaves": min_leaves_table}
 
 
 def main():
@@ -141,7 +150,7 @@ def main():
     elif len(sys.argv) == 3 and sys.argv[1] in TABLES:
         TABLES[sys.argv[1]](load(sys.argv[2]))
     else:
-        sys.exit("usage: bench_tables.py build|trace|bins|budget|overlap ch05.json, or rtk TRACE.txt ... [COMPARE.txt]")
+        sys.exit("usage: bench_tables.py build|trace|bins|budget|overlap|min_leaves ch05.json, or rtk TRACE.txt ... [COMPARE.txt]")
 
 
 if __name__ == "__main__":

@@ -84,6 +84,7 @@ class Builder {
       : mesh_(mesh), options_(options), sah_(options.sah), root_area_(root_area),
         counters_(counters) {
     spatial_on_ = options.mode != SpatialSplitMode::none && options.budget > 0.0f;
+    min_priced_refs_ = uint64_t(options.min_leaves) * uint64_t(options.sah.max_leaf_size);
   }
 
   /// Makes a set of `refs` with `budget`, and evaluates it.
@@ -97,9 +98,9 @@ class Builder {
   }
 
   // [ch05-evaluate]
-  /// Prices a set's splits: chapter 4's binned object split always; a spatial split only where
-  /// the object split's children overlap by more than alpha times the root's area and by at
-  /// least min_overlap times the set's own.
+  /// Prices a set's splits: chapter 4's binned object split always; a spatial split only for a
+  /// set of at least min_leaves full leaves, where the object split's children overlap by more
+  /// than alpha times the root's area and by at least min_overlap times the set's own.
   void evaluate(Set& s) const {
     const uint32_t n = s.size();
     s.object = sah::Split{};
@@ -117,7 +118,7 @@ class Builder {
                                  ? half_area(intersection(s.object.left_bounds, s.object.right_bounds))
                                  : std::numeric_limits<double>::infinity();
       s.spatial_tried = spatial_on_ && s.budget > 0;
-      if (s.spatial_tried && overlap > kSpatialAlpha * root_area_ &&
+      if (s.spatial_tried && n >= min_priced_refs_ && overlap > kSpatialAlpha * root_area_ &&
           overlap >= double(options_.min_overlap) * half_area(s.bounds)) {
         ++counters_.searches;
         s.planes = options_.mode == SpatialSplitMode::centre
@@ -244,6 +245,7 @@ class Builder {
   double root_area_;
   Counters& counters_;
   bool spatial_on_ = false;
+  uint64_t min_priced_refs_ = 0;  ///< the smallest set whose spatial splits are priced
 };
 
 void check_options(const SpatialBuildOptions& o) {

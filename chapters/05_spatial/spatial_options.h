@@ -56,6 +56,13 @@ struct SpatialBuildOptions {
   /// spatial split can win. 0 prices every set alpha passes; 1 prices (almost) none. The default
   /// is measured in chapter 5 ("Where to look for spatial splits").
   float min_overlap = 0.2f;
+  /// Spatial splits are priced only for sets of at least this many full leaves of references
+  /// (min_leaves * sah.max_leaf_size); smaller sets take their object split. Such a set becomes
+  /// a few leaves a level or two further down, so a better plane saves little there, while
+  /// pricing it costs as much per reference as near the root. 0 prices every set the other
+  /// rules let through. The default is measured in chapter 5 ("Where to look for spatial
+  /// splits").
+  uint32_t min_leaves = 4;
   /// Reference unsplitting (Stich et al., section 4.3): a reference that straddles a spatial
   /// split plane goes wholly to one side when that is cheaper than cutting it in two.
   bool unsplit = true;
