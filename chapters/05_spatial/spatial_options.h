@@ -27,7 +27,7 @@ inline constexpr double kSpatialAlpha = 1e-5;
 
 /// Spatial bins per axis of the binned mode. Each bin a reference spans costs one exact clip, so
 /// the build time grows with the bins: on sponza and the chapter's hall, 16 bins priced within
-/// 0.3 % of 32 in SAH at 0.56-0.71 of the build time (chapter.md, "Measurements").
+/// 0.3 % of 32 in SAH at 0.56-0.76 of the build time (chapter.md, "Measurements").
 inline constexpr int kDefaultSpatialBins = 16;
 
 /// The most spatial bins per axis the builder supports.
