@@ -222,7 +222,7 @@ section_ch05() { # spatial splits: build, references, SAH and speed against obje
 section_ch05_budget() { # spatial splits: the duplication budget against references and speed; the chart
   build ch05_bench
   RTK_SCENES=$SCENES gbench ch05_budget "$B/chapters/05_spatial/ch05_bench" --benchmark_counters_tabular=true \
-    --benchmark_filter='^budget/'
+    --benchmark_filter='^budget/' --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
   python3 chapters/05_spatial/figure/budget_chart.py "$OUT/ch05_budget.json" chapters/05_spatial/ch05_budget.tsv
   plot chapters/05_spatial/figure/budget.gp chapters/05_spatial/ch05_budget
   table ch05_budget chapters/05_spatial/ch05_budget.md \

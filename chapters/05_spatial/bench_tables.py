@@ -18,10 +18,17 @@ import sys
 
 def load(path):
     """Benchmark results by name (without Google Benchmark's /iterations:N and /min_time:T
-    suffixes), in the order of the file (one iteration run each)."""
+    suffixes), in the order the benchmark registered them: one iteration run each, or the
+    median of the repetitions where the run repeated a benchmark (in random order, with
+    --benchmark_enable_random_interleaving)."""
     with open(path) as f:
-        runs = [b for b in json.load(f)["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
-    return {re.sub(r"(/(iterations|min_time|repeats):[^/]*|/(real|manual)_time)+$", "", b["name"]): b for b in runs}
+        runs = json.load(f)["benchmarks"]
+    repeated = {b["run_name"] for b in runs if b.get("aggregate_name") == "median"}
+    chosen = [b for b in runs if b.get("aggregate_name") == "median"] + \
+        [b for b in runs if b.get("run_type", "iteration") == "iteration" and b.get("run_name", b["name"]) not in repeated]
+    chosen.sort(key=lambda b: (b.get("family_index", 0), b.get("per_family_instance_index", 0)))  # as registered
+    return {re.sub(r"(/(iterations|min_time|repeats):[^/]*|/(real|manual)_time)+$", "", b.get("run_name", b["name"])): b
+            for b in chosen}
 
 
 def scenes_of(rows, prefix):

@@ -1,6 +1,7 @@
 """Chapter 5's chart data: the duplication budget of the binned spatial-split builder against
 what it makes (references per triangle) and buys (diffuse Mrays/s, relative to the smallest
-budget), per scene, from `ch05_bench` JSON (the budget/<scene>/<percent>% benchmarks).
+budget), per scene, from `ch05_bench` JSON (the budget/<scene>/<percent>% benchmarks; the
+median of each when the run repeated them).
 
     python3 budget_chart.py ch05.json OUT.tsv"""
 import json
@@ -10,10 +11,16 @@ import sys
 def main():
     with open(sys.argv[1]) as f:
         runs = json.load(f)["benchmarks"]
+    # With --benchmark_repetitions, each benchmark's median stands for it.
+    medians = any(b.get("aggregate_name") == "median" for b in runs)
     rows, scenes = {}, []
+    runs = sorted(runs, key=lambda b: (b.get("family_index", 0), b.get("per_family_instance_index", 0)))
     for b in runs:
-        parts = b["name"].split("/")
-        if parts[0] != "budget" or b.get("run_type", "iteration") != "iteration":
+        parts = b.get("run_name", b["name"]).split("/")
+        kind = "aggregate" if medians else "iteration"
+        if parts[0] != "budget" or b.get("run_type", "iteration") != kind:
+            continue
+        if medians and b.get("aggregate_name") != "median":
             continue
         scene, budget = parts[1], int(parts[2].rstrip("%"))
         scenes += [scene] if scene not in scenes else []
