@@ -54,24 +54,31 @@ struct PlaneSides {
 // [ch05-spatial-bins]
 /// The slabs of one axis: plane(i) is the border between slab i - 1 and slab i, computed in
 /// double from the box and rounded once, so that binning and the split use the same float.
+/// The borders are computed when the slabs are made: every reference looks several of them up.
 struct Slabs {
-  double origin = 0, width = 0;
+  double origin = 0, width = 0, per_width = 0;
   int count = 0;
-  float lower = 0, upper = 0;
   bool usable = false;
+  std::array<float, kMaxSpatialBins + 1> borders;  ///< plane(0) ... plane(count)
 
   Slabs(const Box3f& bounds, int axis, int bins) : count(bins) {
-    lower = bounds.lower[axis], upper = bounds.upper[axis];
-    origin = lower;
-    width = (double(upper) - origin) / bins;
+    origin = bounds.lower[axis];
+    width = (double(bounds.upper[axis]) - origin) / bins;
+    per_width = 1.0 / width;
     usable = width > 0.0 && std::isfinite(width);
+    borders[0] = bounds.lower[axis], borders[size_t(bins)] = bounds.upper[axis];
+    for (int i = 1; i < bins; ++i) borders[size_t(i)] = float(origin + width * i);
   }
-  float plane(int i) const { return i <= 0 ? lower : i >= count ? upper : float(origin + width * i); }
+  float plane(int i) const { return borders[size_t(std::clamp(i, 0, count))]; }
+  /// The planes strictly inside slabs [f, l]: plane(f + 1) ... plane(l).
+  std::span<const float> planes_within(int f, int l) const {
+    return {borders.data() + f + 1, size_t(l - f)};
+  }
   /// The first slab a reference counts in: the lowest i whose right plane the reference's lower
   /// end lies below (or, for a reference flat in that plane, touches). Then a reference is on
   /// the left of plane i, wholly or in part, exactly when first < i.
   int first(float lo, float hi) const {
-    int i = std::clamp(int((double(lo) - origin) / width), 0, count - 1);
+    int i = std::clamp(int((double(lo) - origin) * per_width), 0, count - 1);  // a guess
     auto left_of = [&](int j) { return j >= count - 1 || lo < plane(j + 1) || hi <= plane(j + 1); };
     while (i > 0 && left_of(i - 1)) --i;
     while (!left_of(i)) ++i;
@@ -80,7 +87,7 @@ struct Slabs {
   /// The last slab: the highest i whose left plane the upper end lies above. A reference is on
   /// the right of plane i exactly when last >= i.
   int last(float hi) const {
-    int i = std::clamp(int((double(hi) - origin) / width), 0, count - 1);
+    int i = std::clamp(int((double(hi) - origin) * per_width), 0, count - 1);  // a guess
     auto right_of = [&](int j) { return j <= 0 || hi > plane(j); };
     while (i < count - 1 && right_of(i + 1)) ++i;
     while (!right_of(i)) --i;
@@ -122,11 +129,8 @@ void bin_refs(const PrimRef* refs, size_t first, size_t last, const std::array<S
         continue;
       }
       // Reference chopping: the exact part of the triangle in each slab it crosses.
-      std::array<float, kMaxSpatialBins> planes;
-      for (int i = f + 1; i <= l; ++i) planes[size_t(i - f - 1)] = s.plane(i);
       if (!part) part.emplace(mesh.vertex(ref.prim, 0), mesh.vertex(ref.prim, 1), mesh.vertex(ref.prim, 2), box);
-      part->chop(axis, std::span<const float>(planes.data(), size_t(l - f)),
-                 std::span<ExactBox>(out.bounds[axis].data() + f, size_t(l - f + 1)));
+      part->chop(axis, s.planes_within(f, l), std::span<ExactBox>(out.bounds[axis].data() + f, size_t(l - f + 1)));
     }
   }
 }
