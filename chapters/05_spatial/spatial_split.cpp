@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 
 #include "04_sah/binning.h"
 #include "05_spatial/clip.h"
@@ -117,21 +116,27 @@ void bin_refs(const PrimRef* refs, size_t first, size_t last, const std::array<S
   for (size_t r = first; r < last; ++r) {
     const PrimRef& ref = refs[r];
     const Box3f box = ref.box();
-    // The triangle clipped to the reference's box once, for every axis that chops it.
-    std::optional<ClippedTriangle> part;
+    // The first and last slab on each axis; a reference within one slab counts there as it is.
+    std::array<int, 3> f{}, l{};
+    bool crosses = false;
     for (int axis = 0; axis < 3; ++axis) {
       const Slabs& s = slabs[axis];
       if (!s.usable) continue;
-      const int f = s.first(box.lower[axis], box.upper[axis]), l = s.last(box.upper[axis]);
-      ++out.entry[axis][f], ++out.exit[axis][l];
-      if (f >= l) {  // within one slab: the reference's box as it is
-        out.bounds[axis][f].extend(box);
-        continue;
-      }
-      // Reference chopping: the exact part of the triangle in each slab it crosses.
-      if (!part) part.emplace(mesh.vertex(ref.prim, 0), mesh.vertex(ref.prim, 1), mesh.vertex(ref.prim, 2), box);
-      part->chop(axis, s.planes_within(f, l), std::span<ExactBox>(out.bounds[axis].data() + f, size_t(l - f + 1)));
+      f[axis] = s.first(box.lower[axis], box.upper[axis]), l[axis] = s.last(box.upper[axis]);
+      ++out.entry[axis][f[axis]], ++out.exit[axis][l[axis]];
+      if (f[axis] >= l[axis])
+        out.bounds[axis][f[axis]].extend(box);
+      else
+        crosses = true;
     }
+    if (!crosses) continue;
+    // Reference chopping: the exact part of the triangle in each slab it crosses, the triangle
+    // clipped to the reference's box once for every axis that chops it.
+    const ClippedTriangle part(mesh.vertex(ref.prim, 0), mesh.vertex(ref.prim, 1), mesh.vertex(ref.prim, 2), box);
+    for (int axis = 0; axis < 3; ++axis)
+      if (slabs[axis].usable && f[axis] < l[axis])
+        part.chop(axis, slabs[axis].planes_within(f[axis], l[axis]),
+                  std::span<ExactBox>(out.bounds[axis].data() + f[axis], size_t(l[axis] - f[axis] + 1)));
   }
 }
 // [ch05-spatial-bins]
