@@ -96,14 +96,23 @@ TEST_CASE("ch05: spatial splits lower the SAH where triangles are long and diago
   }
 }
 
-TEST_CASE("ch05: spatial splits are priced only where the object split's children overlap") {
-  // Two long thin triangles that cross: the object split puts one on each side, and their boxes,
-  // [0, 1] x [0, 1] x [0, 0.01] and [0.5, 1.5] x [0, 1] x [0, 0.01], overlap in
-  // [0.5, 1] x [0, 1] x [0, 0.01]: half-areas 0.5 + 0.01 + 0.005 = 0.515 of the set's
-  // 1.5 + 0.01 + 0.015 = 1.525, a fraction of 0.3377.
+namespace {
+
+/// Two long thin triangles that cross: the object split puts one on each side, and their boxes,
+/// [0, 1] x [0, 1] x [0, 0.01] and [0.5, 1.5] x [0, 1] x [0, 0.01], overlap in
+/// [0.5, 1] x [0, 1] x [0, 0.01]: half-areas 0.5 + 0.01 + 0.005 = 0.515 of the set's
+/// 1.5 + 0.01 + 0.015 = 1.525, a fraction of 0.3377.
+TriangleMesh crossing_slivers() {
   TriangleMesh cross;
   cross.vertices = {{0, 0, 0}, {1, 1, 0}, {1, 1, 0.01f}, {0.5f, 1, 0}, {1.5f, 0, 0}, {1.5f, 0, 0.01f}};
   cross.triangles = {{0, 1, 2}, {3, 4, 5}};
+  return cross;
+}
+
+}  // namespace
+
+TEST_CASE("ch05: spatial splits are priced only where the object split's children overlap") {
+  const TriangleMesh cross = crossing_slivers();
   SpatialBuildOptions options;
   options.budget = 1.0f;
   options.min_leaves = 0;  // a set of two is priced, so that only the overlap decides
@@ -130,11 +139,9 @@ TEST_CASE("ch05: spatial splits are priced only where the object split's childre
 }
 
 TEST_CASE("ch05: sets of fewer than min_leaves full leaves are split by objects alone") {
-  // The two crossing slivers above, with leaves of one triangle: their one set is priced when
-  // two leaves' worth is enough, and not when three are asked for.
-  TriangleMesh cross;
-  cross.vertices = {{0, 0, 0}, {1, 1, 0}, {1, 1, 0.01f}, {0.5f, 1, 0}, {1.5f, 0, 0}, {1.5f, 0, 0.01f}};
-  cross.triangles = {{0, 1, 2}, {3, 4, 5}};
+  // The two crossing slivers, with leaves of one triangle: their one set is priced when two
+  // leaves' worth is enough, and not when three are asked for.
+  const TriangleMesh cross = crossing_slivers();
   SpatialBuildOptions options;
   options.budget = 1.0f;
   options.sah.max_leaf_size = 1;

@@ -4,23 +4,20 @@ budget), per scene, from `ch05_bench` JSON (the budget/<scene>/<percent>% benchm
 median of each when the run repeated them).
 
     python3 budget_chart.py ch05.json OUT.tsv"""
-import json
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from bench_tables import load  # noqa: E402  (chapter 5's table writer, one folder up)
 
 
 def main():
-    with open(sys.argv[1]) as f:
-        runs = json.load(f)["benchmarks"]
-    # With --benchmark_repetitions, each benchmark's median stands for it.
-    medians = any(b.get("aggregate_name") == "median" for b in runs)
+    # bench_tables.load() picks each benchmark's run (its median where the run repeated them)
+    # in the order the benchmark registered them.
     rows, scenes = {}, []
-    runs = sorted(runs, key=lambda b: (b.get("family_index", 0), b.get("per_family_instance_index", 0)))
-    for b in runs:
-        parts = b.get("run_name", b["name"]).split("/")
-        kind = "aggregate" if medians else "iteration"
-        if parts[0] != "budget" or b.get("run_type", "iteration") != kind:
-            continue
-        if medians and b.get("aggregate_name") != "median":
+    for name, b in load(sys.argv[1]).items():
+        parts = name.split("/")
+        if parts[0] != "budget":
             continue
         scene, budget = parts[1], int(parts[2].rstrip("%"))
         scenes += [scene] if scene not in scenes else []
