@@ -69,36 +69,19 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   int exponent = 0;
   if (!(largest < 0x1p40f)) std::frexp(largest, &exponent);
   const float s = exponent == 0 ? 1.0f : std::ldexp(1.0f, -std::clamp(exponent, -125, 127));
-  // Half the areas of the three boxes [l[a], u[a]], one per lane, after scaling: each box's
-  // products dx dy, dy dz, dz dx side by side, then summed across by transposing. Lane 3 of
-  // the lower corners holds the bins' counts, so the extents' lane 3 is set to 0 first.
-  const Ints4 xyz{-1, -1, -1, 0};
-  auto areas = [s, xyz](const Lanes4 (&l)[3], const Lanes4 (&u)[3]) {
-    Lanes4 t[3];
-    for (int a = 0; a < 3; ++a) {
-      const Lanes4 extent = s == 1.0f ? u[a] - l[a] : u[a] * s - l[a] * s;
-      const Lanes4 d = reinterpret_cast<Lanes4>(reinterpret_cast<Ints4>(extent) & xyz);
-      t[a] = d * __builtin_shufflevector(d, d, 1, 2, 0, 3);  // lane 3: 0 * 0
-    }
-    const Lanes4 zero{0, 0, 0, 0};
-    const Lanes4 ab = __builtin_shufflevector(t[0], t[1], 0, 4, 2, 6) +
-                      __builtin_shufflevector(t[0], t[1], 1, 5, 3, 7);
-    return (__builtin_shufflevector(ab, t[2], 0, 1, 4, 7) +
-            __builtin_shufflevector(ab, t[2], 2, 3, 5, 7)) +
-           __builtin_shufflevector(t[2], zero, 4, 4, 2, 4);
-  };
+  // The sweeps read the bins transposed: row k of `lower` holds coordinate k of the three
+  // axes' bins side by side (lane a: the bin of axis a), and row 3 their counts, which lane 3
+  // of each lower corner holds; the same for the negated upper corners. Then one minimum per
+  // row grows the three axes' boxes at once, and each box's extents, products and sums are
+  // plain lane-by-lane operations, where the bins as stored (one axis's box per register) would
+  // need shuffles at every border. Lane 3 repeats axis 2; it is never chosen (map.scale's lane
+  // 3 is 0). Scaling, where needed, is applied once here: a product by a power of two keeps
+  // the order of the coordinates, so the running minimums of the scaled rows are the scaled
+  // minimums, bit for bit.
   // Counts convert to float as signed integers (SSE2 has no unsigned conversion). A set of
   // 2^31 primitives or more (64 GiB of references) would be priced wrongly, and get a poorer
   // split, never a wrong tree: the chosen split's count and cost are exact below.
   typedef uint32_t Counts4 __attribute__((vector_size(16)));
-  // The three axes' counts of bin i side by side, from lane 3 of each axis's lower corner.
-  const Counts4 count_base{Bin::kCountBase, Bin::kCountBase, Bin::kCountBase, 0};
-  auto counts = [&](int i) {
-    const auto lane3 = [&](int axis) { return reinterpret_cast<Counts4>(bins.bin[axis][i].lower); };
-    const Counts4 c01 = __builtin_shufflevector(lane3(0), lane3(1), 3, 7, 3, 7);
-    const Counts4 c = __builtin_shufflevector(c01, lane3(2), 0, 1, 7, 4);
-    return (c - count_base) & reinterpret_cast<Counts4>(xyz);
-  };
   const Counts4 none{0, 0, 0, 0};
   // A side of c primitives costs ceil(c / leaf_block) tests: (c + leaf_block - 1) >> shift.
   const int shift = std::countr_zero(unsigned(leaf_block));
@@ -106,31 +89,63 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   auto tests = [&](Counts4 c) {
     return __builtin_convertvector(reinterpret_cast<Ints4>((c + round_up) >> shift), Lanes4);
   };
+  struct Rows {
+    Lanes4 lower[3], neg_upper[3];
+    Counts4 count;
+  };
+  Rows rows[kMaxSahBins];
+  const Lanes4 scale{s, s, s, s};
+  auto transpose = [](const Lanes4 (&r)[3], Lanes4 (&out)[3]) {
+    const Lanes4 xy = __builtin_shufflevector(r[0], r[1], 0, 4, 1, 5);  // x0 x1 y0 y1
+    const Lanes4 zc = __builtin_shufflevector(r[0], r[1], 2, 6, 3, 7);  // z0 z1 c0 c1
+    out[0] = __builtin_shufflevector(xy, r[2], 0, 1, 4, 4);
+    out[1] = __builtin_shufflevector(xy, r[2], 2, 3, 5, 5);
+    out[2] = __builtin_shufflevector(zc, r[2], 0, 1, 6, 6);
+    return __builtin_shufflevector(zc, r[2], 2, 3, 7, 7);
+  };
+  const Counts4 count_base = none + Bin::kCountBase;
+  for (int i = 0; i < n; ++i) {
+    const Lanes4 lower[3] = {bins.bin[0][i].lower, bins.bin[1][i].lower, bins.bin[2][i].lower};
+    const Lanes4 neg_upper[3] = {bins.bin[0][i].neg_upper, bins.bin[1][i].neg_upper, bins.bin[2][i].neg_upper};
+    rows[i].count = reinterpret_cast<Counts4>(transpose(lower, rows[i].lower)) - count_base;
+    transpose(neg_upper, rows[i].neg_upper);
+    if (s != 1.0f)
+      for (int k = 0; k < 3; ++k) rows[i].lower[k] *= scale, rows[i].neg_upper[k] *= scale;
+  }
+  // A growing box of each axis, and its price: half its area, (dx dy + dy dz) + dz dx, times
+  // its tests. The extents come out negated, -(upper - lower) = neg_upper + lower exactly, and
+  // the products of two of them are the products of the extents.
+  struct Growing {
+    Lanes4 lower[3], neg_upper[3];
+    Counts4 count;
+    void grow(const Rows& r) {
+      for (int k = 0; k < 3; ++k) lower[k] = min4(lower[k], r.lower[k]), neg_upper[k] = min4(neg_upper[k], r.neg_upper[k]);
+      count += r.count;
+    }
+    Lanes4 half_area() const {
+      const Lanes4 dx = neg_upper[0] + lower[0], dy = neg_upper[1] + lower[1], dz = neg_upper[2] + lower[2];
+      return (dx * dy + dy * dz) + dz * dx;
+    }
+  };
+  const Growing empty{{pos_inf, pos_inf, pos_inf}, {pos_inf, pos_inf, pos_inf}, none};
   // Sweep from the right: right_cost[i] prices bins [i, n) of each axis as one child, area
-  // times count (infinite where no primitive is there).
+  // times tests (infinite where no primitive is there).
   Lanes4 right_cost[kMaxSahBins];
   {
-    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
-    Counts4 c = none;
+    Growing g = empty;
     for (int i = n - 1; i > 0; --i) {
-      for (int a = 0; a < 3; ++a) l[a] = min4(l[a], bins.bin[a][i].lower), u[a] = max4(u[a], -bins.bin[a][i].neg_upper);
-      c += counts(i);
-      const Lanes4 cost = areas(l, u) * tests(c);
-      right_cost[i] = c == none ? pos_inf : cost;
+      g.grow(rows[i]);
+      right_cost[i] = g.count == none ? pos_inf : g.half_area() * tests(g.count);
     }
   }
   // Sweep from the left, pricing the border before each bin i, and keep the cheapest: the
   // first one, lowest axis then lowest border, among equals.
   Lanes4 cost[kMaxSahBins];
   {
-    Lanes4 l[3] = {pos_inf, pos_inf, pos_inf}, u[3] = {neg_inf, neg_inf, neg_inf};
-    Counts4 c = none;
+    Growing g = empty;
     for (int i = 1; i < n; ++i) {
-      for (int a = 0; a < 3; ++a)
-        l[a] = min4(l[a], bins.bin[a][i - 1].lower), u[a] = max4(u[a], -bins.bin[a][i - 1].neg_upper);
-      c += counts(i - 1);
-      const Lanes4 total = areas(l, u) * tests(c) + right_cost[i];
-      cost[i] = c == none ? pos_inf : total;
+      g.grow(rows[i - 1]);
+      cost[i] = g.count == none ? pos_inf : g.half_area() * tests(g.count) + right_cost[i];
     }
   }
   // The cheapest border of every axis at once, lane by lane, without a branch on which is

@@ -371,7 +371,8 @@ BuildTree<N> checked_build(size_t count, const char* what, const SahBuildOptions
   check_sah_options(options, "build_binned_sah");
   if (count > size_t(std::numeric_limits<uint32_t>::max()) - 1)
     throw std::length_error(std::string("build_binned_sah: more than 2^32 - 2 ") + what);
-  auto build = [&] { return sah::build<N>(prepare(), count, options, stats); };
+  const SahBuildOptions resolved = with_binning_isa(options);
+  auto build = [&] { return sah::build<N>(prepare(), count, resolved, stats); };
   if (options.threads == 0) return build();
   tbb::task_arena arena(options.threads);
   return arena.execute(build);

@@ -102,6 +102,12 @@ struct SahBuildOptions {
 
 /// The variant of the binning passes the options ask for.
 inline Isa binning_isa(const SahBuildOptions& options) { return options.isa.value_or(best_isa()); }
+/// The options with the binning passes' instruction set chosen, so that a builder asks once
+/// rather than at every set.
+inline SahBuildOptions with_binning_isa(SahBuildOptions options) {
+  options.isa = binning_isa(options);
+  return options;
+}
 
 /// Options for leaves stored in blocks of `leaf_block` triangles tested together: a leaf is
 /// priced by its blocks, one block at the price of a node step (intersection_cost 1), and may

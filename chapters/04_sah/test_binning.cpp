@@ -147,6 +147,74 @@ TEST_CASE("ch04: the sweep finds the cheapest border, by count or by blocks, as 
   }
 }
 
+/// The border the sweep must choose, priced one border at a time in the sweep's own float
+/// arithmetic: each side's half area as (dx dy + dy dz) + dz dx, times its tests, the two sides
+/// summed; the cheapest, the lowest axis and then the lowest border among equals. For sets whose
+/// coordinates stay below 2^40, which the sweep prices without scaling.
+std::pair<int, int> cheapest_border_in_float(const Bins& bins, const BinMapping& map, int block) {
+  const int n = bins.num_bins;
+  const auto side_cost = [&](int axis, int first, int last) {
+    const Box3f b = bin_bounds(bins, axis, first, last);
+    const float dx = b.upper.x - b.lower.x, dy = b.upper.y - b.lower.y, dz = b.upper.z - b.lower.z;
+    return ((dx * dy + dy * dz) + dz * dx) * float(leaf_tests(bin_count(bins, axis, first, last), block));
+  };
+  float best = std::numeric_limits<float>::infinity();
+  std::pair<int, int> choice{-1, 0};
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!map.splittable(axis)) continue;
+    for (int i = 1; i < n; ++i) {
+      if (bin_count(bins, axis, 0, i) == 0 || bin_count(bins, axis, i, n) == 0) continue;
+      const float cost = side_cost(axis, 0, i) + side_cost(axis, i, n);
+      if (cost < best) best = cost, choice = {axis, i};
+    }
+  }
+  return choice;
+}
+
+TEST_CASE("ch04: the sweep chooses the border a scalar pricing in its own float arithmetic chooses") {
+  // Soups of several sizes and spreads, and a mesh whose many equal costs (a regular grid) test
+  // the rule among equals.
+  std::vector<std::vector<PrimRef>> sets;
+  for (const int seed : {1, 2, 3})
+    sets.push_back(make_prim_refs(test::make_random_soup(40 * seed * seed, uint64_t(seed))));
+  sets.push_back(make_prim_refs(test::make_terrain(8, 1)));
+  for (const auto& refs : sets)
+    for (const int n : {2, 5, 16, 32}) {
+      const auto [map, bins] = bin_all(refs, n);
+      for (const int block : {1, 4, 8}) {
+        CAPTURE(refs.size());
+        CAPTURE(n);
+        CAPTURE(block);
+        const Split s = find_best_split(*bins, map, block);
+        const auto [axis, pos] = cheapest_border_in_float(*bins, map, block);
+        CHECK(s.axis == axis);
+        if (s.valid()) CHECK(s.pos == pos);
+      }
+    }
+}
+
+TEST_CASE("ch04: the sweep chooses the same border for a set scaled by a power of two") {
+  // Past 2^40 the sweep scales the coordinates down by a power of two before pricing; scaling is
+  // exact, so a set and its copy scaled by 2^100 (coordinates near 1e30) must split alike.
+  const std::vector<PrimRef> refs = make_prim_refs(test::make_random_soup(300, 7));
+  std::vector<PrimRef> scaled;
+  for (const PrimRef& r : refs) {
+    scaled.push_back(box_ref(r.lower * 0x1p100f, r.upper * 0x1p100f, r.prim));
+  }
+  for (const int n : {5, 32})
+    for (const int block : {1, 8}) {
+      CAPTURE(n);
+      CAPTURE(block);
+      const auto [map, bins] = bin_all(refs, n);
+      const auto [scaled_map, scaled_bins] = bin_all(scaled, n);
+      const Split s = find_best_split(*bins, map, block), t = find_best_split(*scaled_bins, scaled_map, block);
+      REQUIRE(s.valid());
+      CHECK(t.axis == s.axis);
+      CHECK(t.pos == s.pos);
+      CHECK(t.left_count == s.left_count);
+    }
+}
+
 TEST_CASE("ch04: the sweep finds no split when all centroids coincide") {
   std::vector<PrimRef> refs;
   for (uint32_t i = 0; i < 8; ++i) refs.push_back(box_ref(Vec3f(-float(i)), Vec3f(float(i)), i));

@@ -81,7 +81,7 @@ class Builder {
 
   Builder(const TriangleMesh& mesh, const SpatialBuildOptions& options, double root_area,
           Counters& counters)
-      : mesh_(mesh), options_(options), sah_(options.sah), root_area_(root_area),
+      : mesh_(mesh), options_(options), sah_(with_binning_isa(options.sah)), root_area_(root_area),
         counters_(counters) {
     spatial_on_ = options.mode != SpatialSplitMode::none && options.budget > 0.0f;
     min_priced_refs_ = uint64_t(options.min_leaves) * uint64_t(options.sah.max_leaf_size);
@@ -241,7 +241,7 @@ class Builder {
  private:
   const TriangleMesh& mesh_;
   const SpatialBuildOptions& options_;
-  const SahBuildOptions& sah_;
+  const SahBuildOptions sah_;  // options.sah, its binning ISA chosen
   double root_area_;
   Counters& counters_;
   bool spatial_on_ = false;
