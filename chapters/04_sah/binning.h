@@ -149,13 +149,14 @@ struct Bins {
   /// Empties the first `n` bins on every axis.
   void reset(int n) {
     num_bins = n;
+    // An empty bin, its count (0) in lane 3 from the start: one copy per bin, not a copy and
+    // then a store of the count into the lane.
     constexpr float f = std::numeric_limits<float>::infinity();
     const Lanes4 inf{f, f, f, f};
+    const Lanes4 inf_and_no_count{f, f, f, std::bit_cast<float>(Bin::kCountBase)};
+    const Bin empty{inf_and_no_count, inf, inf, inf};
     for (int axis = 0; axis < 3; ++axis)
-      for (int i = 0; i < n; ++i) {
-        bin[axis][i] = Bin{inf, inf, inf, inf};
-        bin[axis][i].set_count(0);
-      }
+      for (int i = 0; i < n; ++i) bin[axis][i] = empty;
   }
   /// Adds another set's bins (same mapping) to these. Minimum and integer addition do not
   /// depend on the order they are applied in, so the merged bins are the same whichever
