@@ -69,15 +69,6 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   int exponent = 0;
   if (!(largest < 0x1p40f)) std::frexp(largest, &exponent);
   const float s = exponent == 0 ? 1.0f : std::ldexp(1.0f, -std::clamp(exponent, -125, 127));
-  // The sweeps read the bins transposed: row k of `lower` holds coordinate k of the three
-  // axes' bins side by side (lane a: the bin of axis a), and row 3 their counts, which lane 3
-  // of each lower corner holds; the same for the negated upper corners. Then one minimum per
-  // row grows the three axes' boxes at once, and each box's extents, products and sums are
-  // plain lane-by-lane operations, where the bins as stored (one axis's box per register) would
-  // need shuffles at every border. Lane 3 repeats axis 2; it is never chosen (map.scale's lane
-  // 3 is 0). Scaling, where needed, is applied once here: a product by a power of two keeps
-  // the order of the coordinates, so the running minimums of the scaled rows are the scaled
-  // minimums, bit for bit.
   // Counts convert to float as signed integers (SSE2 has no unsigned conversion). A set of
   // 2^31 primitives or more (64 GiB of references) would be priced wrongly, and get a poorer
   // split, never a wrong tree: the chosen split's count and cost are exact below.
@@ -89,6 +80,15 @@ Split find_best_split(const Bins& bins, const BinMapping& map, int leaf_block) {
   auto tests = [&](Counts4 c) {
     return __builtin_convertvector(reinterpret_cast<Ints4>((c + round_up) >> shift), Lanes4);
   };
+  // The sweeps read the bins transposed: row k of `lower` holds coordinate k of the three
+  // axes' bins side by side (lane a: the bin of axis a), and row 3 their counts, which lane 3
+  // of each lower corner holds; the same for the negated upper corners. Then one minimum per
+  // row grows the three axes' boxes at once, and each box's extents, products and sums are
+  // plain lane-by-lane operations, where the bins as stored (one axis's box per register) would
+  // need shuffles at every border. Lane 3 repeats axis 2; it is never chosen (map.scale's lane
+  // 3 is 0). Scaling, where needed, is applied once here: a product by a power of two keeps
+  // the order of the coordinates, so the running minimums of the scaled rows are the scaled
+  // minimums, bit for bit.
   struct Rows {
     Lanes4 lower[3], neg_upper[3];
     Counts4 count;
