@@ -68,7 +68,8 @@ enum class ExitWidening { none, after_min, folded, fused };
 /// instead of three, each by at most u = 2^-24, and the entry it is compared with three times:
 /// with the factor 1 + 8u, (1 - u)^4 (1 + 8u) >= (1 + u)^3, so an exit equal to an entry in
 /// exact arithmetic is never rounded below it, as with widen_exit.
-RTK_INLINE float folded_reciprocal(float neg_rdir) { return neg_rdir * (1.0f + kExitWidening); }
+template <int N>
+RTK_INLINE vfloat<N> folded_reciprocal(vfloat<N> neg_rdir) { return neg_rdir * vfloat<N>(1.0f + kExitWidening); }
 // [ch02-folded-widening]
 
 // [ch02-fused-offset]
@@ -85,13 +86,15 @@ RTK_INLINE float folded_reciprocal(float neg_rdir) { return neg_rdir * (1.0f + k
 /// product with the plane minus an infinite offset would be infinity minus infinity. Never
 /// zero: where the move lands on 0 (q is minus the margin, or the margin), the offset goes one
 /// smallest normal float further the same way, so that no slab distance is -0, which equals +0
-/// as a float but not in chapter 3's comparisons of the bits as integers.
-RTK_INLINE float fused_offset(float org, float rdir, bool near) {
-  constexpr float kMin = std::numeric_limits<float>::min();
-  const float q = org * rdir;
-  const float margin = std::max(std::fabs(q) * (4 * 0x1p-24f), kMin);
-  const float offset = near ? q + margin : q - margin;
-  return offset != 0.0f ? offset : near ? kMin : -kMin;
+/// as a float but not in chapter 3's comparisons of the bits as integers. Computed lane for
+/// lane: chapter 3 makes a ray's three axes in one 4-wide register.
+template <int N>
+RTK_INLINE vfloat<N> fused_offset(vfloat<N> org, vfloat<N> rdir, bool near) {
+  const vfloat<N> kMin(std::numeric_limits<float>::min());
+  const vfloat<N> q = org * rdir;
+  const vfloat<N> margin = max(abs(q) * vfloat<N>(4 * 0x1p-24f), kMin);
+  const vfloat<N> offset = near ? q + margin : q - margin;
+  return select(offset != vfloat<N>(0.0f), offset, near ? kMin : -kMin);
 }
 // [ch02-fused-offset]
 

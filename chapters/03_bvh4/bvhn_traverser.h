@@ -54,46 +54,53 @@ inline constexpr bool kFusedBoxTest = true;
 inline constexpr bool kFusedBoxTest = false;
 #endif
 
+// [ch03-ray-lanes]
+/// A ray's origin and direction as 4-wide vectors, x, y, z in lanes 0 to 2. A Ray is org,
+/// tnear, dir, time, tfar, so each is one unaligned load; lane 3 (tnear or time) is carried
+/// along and never read.
+struct RayAxes {
+  vfloat<4> org, dir;
+  explicit RayAxes(const Ray& ray) : org(vfloat<4>::loadu(&ray.org.x)), dir(vfloat<4>::loadu(&ray.dir.x)) {}
+};
+static_assert(offsetof(Ray, tnear) == 3 * sizeof(float) && offsetof(Ray, time) == 7 * sizeof(float));
+// [ch03-ray-lanes]
+
 /// Whether a ray with tnear >= 0 may take the `fused` test: its offsets must be finite, which
 /// every origin within 2^60 of zero and direction no shorter than 2^-60 on any axis makes sure
 /// of (a reciprocal of at most 2^60, a product of at most 2^120), without computing them. An
 /// axis-parallel ray, a zero component, or a NaN fails the test and is tested `folded`.
 RTK_INLINE bool fused_applies(const Ray& ray) {
-  constexpr float kLargest = 0x1p60f, kSmallest = 0x1p-60f;
-  bool within = true;
-  for (int axis = 0; axis < 3; ++axis)
-    within = within && std::fabs(ray.org[axis]) <= kLargest && std::fabs(ray.dir[axis]) >= kSmallest;
-  return within;
+  const RayAxes a(ray);
+  const vbool<4> within = (abs(a.org) <= vfloat<4>(0x1p60f)) & (abs(a.dir) >= vfloat<4>(0x1p-60f));
+  return (movemask(within) & 7u) == 7u;
 }
 
 /// Prepares a valid ray for the N-wide box test, once per ray, its exits widened as `widening`
-/// says (`folded` and `fused` only for a ray with tnear >= 0, as traverse_bvhn chooses).
+/// says (`folded` and `fused` only for a ray with tnear >= 0, as traverse_bvhn chooses). The
+/// three axes are computed side by side in one 4-wide register, then each value is broadcast
+/// to the N lanes of the box test: a ray that visits a dozen nodes spends a good part of its
+/// instructions here, and lane for lane the operations round as they would one float at a time.
 template <int N>
 RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = ExitWidening::after_min) {
   constexpr float kMax = std::numeric_limits<float>::max();
+  const RayAxes a(ray);
   BvhNRay<N> r;
-  r.org_x = vfloat<N>(ray.org.x), r.org_y = vfloat<N>(ray.org.y), r.org_z = vfloat<N>(ray.org.z);
+  auto spread = [](vfloat<4> v, vfloat<N>& x, vfloat<N>& y, vfloat<N>& z) {
+    x = vfloat<N>(v[0]), y = vfloat<N>(v[1]), z = vfloat<N>(v[2]);
+  };
+  spread(a.org, r.org_x, r.org_y, r.org_z);
   // 1/(+-0) = +-inf keeps the sign of a zero component, so the planes chosen below and the
   // distances computed with them agree.
-  const Vec3f rdir{1.0f / ray.dir.x, 1.0f / ray.dir.y, 1.0f / ray.dir.z};
-  r.neg_rdir_x = vfloat<N>(-rdir.x), r.neg_rdir_y = vfloat<N>(-rdir.y), r.neg_rdir_z = vfloat<N>(-rdir.z);
+  const vfloat<4> rdir = vfloat<4>(1.0f) / a.dir, neg_rdir = -rdir;
+  spread(neg_rdir, r.neg_rdir_x, r.neg_rdir_y, r.neg_rdir_z);
   const bool folded = widening == ExitWidening::folded || widening == ExitWidening::fused;
-  auto far = [folded](float neg_rdir) { return folded ? folded_reciprocal(neg_rdir) : neg_rdir; };
-  const Vec3f neg_far_rdir{far(-rdir.x), far(-rdir.y), far(-rdir.z)};
-  r.far_rdir_x = vfloat<N>(neg_far_rdir.x), r.far_rdir_y = vfloat<N>(neg_far_rdir.y),
-  r.far_rdir_z = vfloat<N>(neg_far_rdir.z);
+  const vfloat<4> neg_far_rdir = folded ? folded_reciprocal(neg_rdir) : neg_rdir;
+  spread(neg_far_rdir, r.far_rdir_x, r.far_rdir_y, r.far_rdir_z);
   if (widening == ExitWidening::fused) {
     // [ch03-fused-ray]
     // The far planes' offsets are made with the folded reciprocal above, turned positive.
-    const Vec3f near_offset{fused_offset(ray.org.x, rdir.x, true), fused_offset(ray.org.y, rdir.y, true),
-                            fused_offset(ray.org.z, rdir.z, true)};
-    const Vec3f far_offset{fused_offset(ray.org.x, -neg_far_rdir.x, false),
-                           fused_offset(ray.org.y, -neg_far_rdir.y, false),
-                           fused_offset(ray.org.z, -neg_far_rdir.z, false)};
-    r.near_offset_x = vfloat<N>(near_offset.x), r.near_offset_y = vfloat<N>(near_offset.y),
-    r.near_offset_z = vfloat<N>(near_offset.z);
-    r.far_offset_x = vfloat<N>(far_offset.x), r.far_offset_y = vfloat<N>(far_offset.y),
-    r.far_offset_z = vfloat<N>(far_offset.z);
+    spread(fused_offset(a.org, rdir, true), r.near_offset_x, r.near_offset_y, r.near_offset_z);
+    spread(fused_offset(a.org, -neg_far_rdir, false), r.far_offset_x, r.far_offset_y, r.far_offset_z);
     // [ch03-fused-ray]
   }
   // + 0 turns -0 into +0, which compare equal as floats; the `fused` test compares the bits
@@ -101,10 +108,12 @@ RTK_INLINE BvhNRay<N> make_bvhn_ray(const Ray& ray, ExitWidening widening = Exit
   r.tnear = vfloat<N>((ray.tnear > -kMax ? ray.tnear : -kMax) + 0.0f);
   r.tfar = vfloat<N>(conservative_tfar(ray.tfar, widening != ExitWidening::none) + 0.0f);
   // [ch03-near-far-offsets]
-  // Rows are N floats; the two rows of an axis are adjacent, lower first.
+  // Rows are N floats; the two rows of an axis are adjacent, lower first, and the sign bits of
+  // 1/dir say which of the two an axis enters by.
   constexpr size_t kRow = sizeof(float) * N;
-  auto near_row = [](int axis, float d) { return size_t(2 * axis) * kRow + (std::signbit(d) ? kRow : 0); };
-  r.near_x = near_row(0, rdir.x), r.near_y = near_row(1, rdir.y), r.near_z = near_row(2, rdir.z);
+  const uint32_t negative = sign_bits(rdir);
+  r.near_x = (negative & 1u) * kRow, r.near_y = (2 + ((negative >> 1) & 1u)) * kRow,
+  r.near_z = (4 + ((negative >> 2) & 1u)) * kRow;
   r.far_x = r.near_x ^ kRow, r.far_y = r.near_y ^ kRow, r.far_z = r.near_z ^ kRow;
   // [ch03-near-far-offsets]
   return r;
