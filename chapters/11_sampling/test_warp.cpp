@@ -193,3 +193,24 @@ TEST_CASE("ch11: the disk map's cosine and sine agree with the library's") {
   CHECK(d.x == doctest::Approx(0.8 * std::cos(std::numbers::pi / 8)).epsilon(1e-6));
   CHECK(d.y == doctest::Approx(0.8 * std::sin(std::numbers::pi / 8)).epsilon(1e-6));
 }
+
+TEST_CASE("ch11: cosine-weighted directions are unit vectors with the disk point's height") {
+  // Over a grid of the square, every direction must have length 1 and height
+  // sqrt(1 - r^2), r the disk point's radius, to a few units in the last place: a bounce's
+  // direction is used as it is, without normalising it again.
+  double worst_length = 0.0, worst_height = 0.0;
+  constexpr int kSteps = 257;
+  for (int i = 0; i < kSteps; ++i)
+    for (int j = 0; j < kSteps; ++j) {
+      const Vec2f u{float(i) / (kSteps - 1), float(j) / (kSteps - 1)};
+      const Vec3f w = sample_cosine_hemisphere(u);
+      const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
+      const double r = std::max(std::fabs(a), std::fabs(b));
+      const double length = std::sqrt(double(w.x) * w.x + double(w.y) * w.y + double(w.z) * w.z);
+      worst_length = std::max(worst_length, std::fabs(length - 1.0));
+      worst_height = std::max(worst_height, std::fabs(double(w.z) - std::sqrt(1.0 - r * r)));
+      CHECK(w.z >= 0.0f);
+    }
+  CHECK(worst_length < 4e-7);
+  CHECK(worst_height < 4e-7);
+}
