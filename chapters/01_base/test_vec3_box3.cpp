@@ -62,3 +62,37 @@ TEST_CASE("ch01: rays that are not rays") {
   r.tfar = nan;
   CHECK_FALSE(is_valid(r));
 }
+
+TEST_CASE("ch01: every field of a ray, and each value that can make it no ray") {
+  // Each of the eight fields in turn takes each special value; the rules of is_valid say what
+  // must come out: org and dir finite, dir not zero, tnear <= tfar with neither NaN; time is
+  // not is_valid's business (chapter 8 checks it).
+  const float inf = std::numeric_limits<float>::infinity();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  const float values[] = {nan, -nan, inf, -inf, 0.0f, -0.0f, tiny, 1.0f, -3.0e38f};
+  Ray base;
+  base.org = {1, 2, 3}, base.dir = {0.5f, -0.25f, 1}, base.tnear = 0.5f, base.tfar = 10.0f;
+  base.time = 0.5f;
+  REQUIRE(is_valid(base));
+  for (int field = 0; field < 9; ++field)
+    for (float value : values) {
+      Ray r = base;
+      float* slots[] = {&r.org.x, &r.org.y, &r.org.z, &r.tnear, &r.dir.x, &r.dir.y, &r.dir.z, &r.time, &r.tfar};
+      *slots[field] = value;
+      bool expected = true;
+      if (field < 3 || (field >= 4 && field < 7)) expected = std::isfinite(value);
+      if (field == 3) expected = !std::isnan(value) && value <= base.tfar;
+      if (field == 8) expected = !std::isnan(value) && base.tnear <= value;
+      INFO("field ", field, " value ", value);
+      CHECK(is_valid(r) == expected);
+    }
+  // A direction is zero only when all three components are, of either sign.
+  for (int signs = 0; signs < 8; ++signs) {
+    Ray r = base;
+    r.dir = {signs & 1 ? -0.0f : 0.0f, signs & 2 ? -0.0f : 0.0f, signs & 4 ? -0.0f : 0.0f};
+    CHECK_FALSE(is_valid(r));
+    r.dir.y = tiny;
+    CHECK(is_valid(r));
+  }
+}
