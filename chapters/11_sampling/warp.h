@@ -94,15 +94,28 @@ inline Vec3f sample_uniform_sphere(Vec2f u) {
 /// The density of sample_uniform_sphere: 1 / (4 pi).
 inline constexpr float pdf_uniform_sphere() { return 0.25f * kInvPi; }
 
-/// A uniform direction in the cone of directions within angle acos(cos_max) of +z: the
-/// sphere's construction with z restricted to [cos_max, 1].
-inline Vec3f sample_uniform_cone(Vec2f u, float cos_max) {
-  const float z = 1.0f - u.x * (1.0f - cos_max), r = safe_sqrt(1.0f - z * z),
-              phi = 2.0f * kPi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+// [ch11-cone]
+/// 1 - cos(theta), as 2 sin^2(theta / 2): computed as 1 - std::cos(theta) it is lost below
+/// theta = 3e-4 (the cosine rounds to 1), and holds few correct digits above that for small
+/// angles, where floats just below 1 are 6e-8 apart.
+inline float one_minus_cos(float theta) {
+  const float s = std::sin(0.5f * theta);
+  return 2.0f * s * s;
 }
-/// The density of sample_uniform_cone: one over the cone's solid angle 2 pi (1 - cos_max).
-inline float pdf_uniform_cone(float cos_max) { return 1.0f / (2.0f * kPi * (1.0f - cos_max)); }
+
+/// A uniform direction in the cone of directions within angle theta_max of +z, the cone given
+/// by h = 1 - cos(theta_max) (one_minus_cos): the sphere's construction with z restricted to
+/// [1 - h, 1]. It draws 1 - z = u h rather than z, and the sine from it as sqrt((1 - z)(1 + z)),
+/// so that a cone as narrow as the sun's (h = 1.1e-5) or a star's keeps every digit of its
+/// angles: z itself may round to 1, the direction's sideways part does not.
+inline Vec3f sample_uniform_cone(Vec2f u, float one_minus_cos_max) {
+  const float w = u.x * one_minus_cos_max;  // 1 - z
+  const float r = safe_sqrt(w * (2.0f - w)), phi = 2.0f * kPi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), 1.0f - w};
+}
+/// The density of sample_uniform_cone: one over the cone's solid angle 2 pi (1 - cos theta_max).
+inline float pdf_uniform_cone(float one_minus_cos_max) { return 1.0f / (2.0f * kPi * one_minus_cos_max); }
+// [ch11-cone]
 
 // [ch11-triangle]
 /// Uniform barycentric coordinates (b0, b1, b2) of a triangle: b0 = 1 - sqrt(u.x) picks the

@@ -17,7 +17,10 @@ namespace rtk {
 /// it comes from (the guide's -distantlight dx dy dz r g b halfAngle, the angle in degrees;
 /// `direction` is the way the light travels). Unlike the directional light it has a size, so
 /// rays that hit it by chance see it (le) and MIS can weigh them. Sampling is uniform in the
-/// cone: pdf = 1 / (2 pi (1 - cos theta_max)).
+/// cone: pdf = 1 / (2 pi (1 - cos theta_max)). The cone is held by 1 - cos theta_max, not by
+/// the cosine, and a direction is inside when 1 - cos theta, computed from the difference of
+/// the two unit vectors, is no more: a cosine near 1 has too few digits for a cone as small as
+/// the sun (0.27 degrees), and none at all below 0.02 degrees.
 class DistantLight final : public Light {
  public:
   /// A cone light; throws std::invalid_argument unless 0 < half_angle_degrees <= 180.
@@ -27,30 +30,35 @@ class DistantLight final : public Light {
     if (!(half_angle_degrees > 0.0f && half_angle_degrees <= 180.0f))
       throw std::invalid_argument(
           "distant light half-angle must lie in (0, 180] degrees (use a directional light for 0)");
-    cos_max_ = std::cos(half_angle_degrees * kPi / 180.0f);
+    one_minus_cos_max_ = one_minus_cos(half_angle_degrees * kPi / 180.0f);
   }
   std::optional<LightSample> sample_li(const LightQuery&, Vec2f u) const override {
-    const Vec3f wi = normalize(frame_.to_world(sample_uniform_cone(u, cos_max_)));
-    return LightSample{wi, radiance_, pdf_uniform_cone(cos_max_),
+    const Vec3f wi = normalize(frame_.to_world(sample_uniform_cone(u, one_minus_cos_max_)));
+    return LightSample{wi, radiance_, pdf_uniform_cone(one_minus_cos_max_),
                        std::numeric_limits<float>::infinity(), false};
   }
   float pdf_li(const LightQuery&, Vec3f wi) const override {
-    return inside(wi) ? pdf_uniform_cone(cos_max_) : 0.0f;
+    return inside(wi) ? pdf_uniform_cone(one_minus_cos_max_) : 0.0f;
   }
   Color le(Vec3f wi) const override { return inside(wi) ? radiance_ : Color{}; }
   /// The irradiance at normal incidence, L pi sin^2(theta_max) (the cone's projected solid
   /// angle), through the scene's cross-section.
   Color power(float scene_radius) const override {
-    const float sin2 = 1.0f - cos_max_ * cos_max_;
+    const float sin2 = one_minus_cos_max_ * (2.0f - one_minus_cos_max_);
     return radiance_ * (kPi * sin2 * kPi * scene_radius * scene_radius);
   }
   bool is_infinite() const override { return true; }
 
  private:
-  bool inside(Vec3f wi) const { return dot(wi, frame_.n) >= cos_max_ * length(wi); }
+  /// |w - n|^2 / 2 = 1 - cos theta for unit w and n: the difference of nearly equal vectors is
+  /// exact, component by component, where their dot product would round to 1.
+  bool inside(Vec3f wi) const {
+    const Vec3f d = normalize(wi) - frame_.n;
+    return 0.5f * dot(d, d) <= one_minus_cos_max_;
+  }
   Frame frame_;  // n: the direction toward the light
   Color radiance_;
-  float cos_max_ = 1.0f;
+  float one_minus_cos_max_ = 0.0f;
 };
 // [ch13-distant]
 

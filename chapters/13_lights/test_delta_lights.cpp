@@ -2,10 +2,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <numbers>
+#include <vector>
 #include <stdexcept>
 
 #include "11_sampling/chi_square.h"
+#include "11_sampling/frame.h"
 #include "11_sampling/rng.h"
 #include "13_lights/distant_light.h"
 #include "13_lights/point_light.h"
@@ -19,7 +23,9 @@ bool close(Color a, Color b, float rel = 1e-5f) {
       return false;
   return true;
 }
-const double kAlpha = chi2::sidak_alpha(chi2::kSuiteSignificance, 3);
+// Every chi-square test of this file counts toward the Sidak correction: the 20-degree
+// distant light, the three small ones and the ambient light.
+const double kAlpha = chi2::sidak_alpha(chi2::kSuiteSignificance, 5);
 }  // namespace
 
 TEST_CASE("ch13: a point light falls off with the square of the distance") {
@@ -120,6 +126,60 @@ TEST_CASE("ch13: a distant light fills its cone uniformly (chi-square)") {
   CHECK(light.le(-dir) == Color(150));
   CHECK_THROWS_AS(DistantLight(dir, Color(1), 0.0f), std::invalid_argument);
   CHECK_THROWS_AS(DistantLight(dir, Color(1), 181.0f), std::invalid_argument);
+}
+
+TEST_CASE("ch13: a distant light as small as the sun, or a star, still fills its cone") {
+  // The sun's half-angle is 0.27 degrees, so 1 - cos(theta_max) is 1.1e-5, while floats just
+  // below 1 are 6e-8 apart: a cone held by its cosine has some 190 heights to sample from, and
+  // at 0.01 degrees the cosine rounds to 1 and the cone to nothing. Each light here must give
+  // the irradiance L pi sin^2(theta_max) at normal incidence, sample its cone uniformly in
+  // 1 - cos(theta) (chi-square on ten bins, angles measured in double), keep every sample
+  // inside, agree with pdf_li and le, and report the power of its cone. Inside and agree are
+  // to the resolution of a float direction, 3e-8 radians across the axis: within 1 % of the
+  // edge of the smallest cone a sample may be judged outside, and no farther in.
+  const Vec3f dir = normalize(Vec3f{-0.5f, -0.4f, 1});
+  const Frame toward(-dir);
+  for (const double degrees : {0.27, 0.01, 0.001}) {
+    const double theta_max = degrees * std::numbers::pi / 180, h = 1 - std::cos(theta_max);
+    const double sin2 = std::sin(theta_max) * std::sin(theta_max);
+    const DistantLight light(dir, Color(2), float(degrees));
+    Pcg32 rng(uint64_t(5001 + 1e3 * degrees));
+    constexpr int kN = 20000, kBins = 10;
+    std::vector<double> counts(kBins, 0.0);
+    double irradiance = 0, worst_excess = 0;
+    for (int i = 0; i < kN; ++i) {
+      const float u0 = rng.next_float();
+      const auto s = light.sample_li({}, {u0, rng.next_float()});
+      REQUIRE(s);
+      REQUIRE(std::isfinite(s->pdf));
+      const Vec3f w = toward.to_local(s->wi);  // the cone's axis is +z here
+      const double sine = std::hypot(double(w.x), double(w.y)), angle = std::atan2(sine, double(w.z));
+      worst_excess = std::max(worst_excess, angle - theta_max);
+      irradiance += double(s->L.r) * std::cos(angle) / s->pdf;
+      const double x = (1 - std::cos(angle)) / h;  // uniform in [0, 1] for a uniform cone
+      counts[std::min(kBins - 1, int(x * kBins))] += 1;
+      if (x < 0.99) {
+        REQUIRE(s->pdf == doctest::Approx(light.pdf_li({}, s->wi)));
+        REQUIRE(close(s->L, light.le(s->wi)));
+      }
+    }
+    INFO("half-angle ", degrees, " degrees");
+    CHECK(worst_excess < 1e-7);
+    CHECK(irradiance / kN == doctest::Approx(2 * std::numbers::pi * sin2).epsilon(1e-3));
+    const chi2::Result r = chi2::pearson(counts, std::vector<double>(kBins, double(kN) / kBins));
+    if (chi2::report_enabled())
+      std::printf("ch13 chi2 distant light %-7g deg %s\n", degrees, r.summary().c_str());
+    CHECK(r.passed(kAlpha));
+    // Half the half-angle off the axis is inside, twice it outside.
+    for (const double off : {0.5, 2.0}) {
+      const double a = off * theta_max;
+      const Vec3f wi = toward.to_world(Vec3f{float(std::sin(a)), 0.0f, float(std::cos(a))});
+      CHECK(is_black(light.le(wi)) == (off > 1));
+      CHECK((light.pdf_li({}, wi) > 0) == (off < 1));
+    }
+    const double power = light.power(1.0f).r;  // through a cross-section of radius 1
+    CHECK(power == doctest::Approx(2 * std::numbers::pi * std::numbers::pi * sin2).epsilon(1e-4));
+  }
 }
 
 TEST_CASE("ch13: the ambient light is cosine-sampled about the normal") {
