@@ -96,7 +96,7 @@ inline constexpr float pdf_uniform_sphere() { return 0.25f * kInvPi; }
 
 // [ch11-cone]
 /// 1 - cos(theta), as 2 sin^2(theta / 2): computed as 1 - std::cos(theta) it is lost below
-/// theta = 3e-4 (the cosine rounds to 1), and holds few correct digits above that for small
+/// theta = 2.4e-4 (the cosine rounds to 1), and holds few correct digits above that for small
 /// angles, where floats just below 1 are 6e-8 apart.
 inline float one_minus_cos(float theta) {
   const float s = std::sin(0.5f * theta);

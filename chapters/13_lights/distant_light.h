@@ -20,7 +20,7 @@ namespace rtk {
 /// cone: pdf = 1 / (2 pi (1 - cos theta_max)). The cone is held by 1 - cos theta_max, not by
 /// the cosine, and a direction is inside when 1 - cos theta, computed from the difference of
 /// the two unit vectors, is no more: a cosine near 1 has too few digits for a cone as small as
-/// the sun (0.27 degrees), and none at all below 0.02 degrees.
+/// the sun (0.27 degrees), and none at all below 0.014 degrees.
 class DistantLight final : public Light {
  public:
   /// A cone light; throws std::invalid_argument unless 0 < half_angle_degrees <= 180.
