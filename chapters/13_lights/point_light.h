@@ -71,15 +71,19 @@ class SpotLight final : public Light {
     if (!is_finite(position)) throw std::invalid_argument("spot light position must be finite");
     if (!(inner_degrees >= 0.0f && inner_degrees <= outer_degrees && outer_degrees <= 180.0f))
       throw std::invalid_argument("spot light angles must satisfy 0 <= angleMin <= angleMax <= 180 degrees");
-    cos_inner_ = std::cos(inner_degrees * kPi / 180.0f);
-    cos_outer_ = std::cos(outer_degrees * kPi / 180.0f);
+    h_inner_ = one_minus_cos(inner_degrees * kPi / 180.0f);
+    h_outer_ = one_minus_cos(outer_degrees * kPi / 180.0f);
   }
-  /// The fraction of the intensity emitted along the unit direction `w` (away from the light).
+  /// The fraction of the intensity emitted along the unit direction `w` (away from the light):
+  /// linear in cos(theta) between the cones, here in h = 1 - cos(theta), which keeps its
+  /// digits for a beam narrower than a float cosine can tell from 1 (chapter 11's
+  /// one_minus_cos; |w - axis|^2 / 2 is 1 - cos(theta) for unit vectors).
   float falloff(Vec3f w) const {
-    const float c = dot(axis_, w);
-    if (c >= cos_inner_) return 1.0f;
-    if (c <= cos_outer_) return 0.0f;
-    return (c - cos_outer_) / (cos_inner_ - cos_outer_);
+    const Vec3f d = w - axis_;
+    const float h = 0.5f * dot(d, d);
+    if (h <= h_inner_) return 1.0f;
+    if (h >= h_outer_) return 0.0f;
+    return (h_outer_ - h) / (h_outer_ - h_inner_);
   }
   std::optional<LightSample> sample_li(const LightQuery& q, Vec2f) const override {
     const Vec3f d = position_ - q.p;
@@ -92,16 +96,15 @@ class SpotLight final : public Light {
   }
   float pdf_li(const LightQuery&, Vec3f) const override { return 0.0f; }
   /// I times the solid angle the falloff weighs: with c = cos(theta), the integral of the
-  /// falloff over the sphere is 2 pi (1 - c_inner + (c_inner - c_outer) / 2).
-  Color power(float) const override {
-    return intensity_ * (2.0f * kPi * (1.0f - 0.5f * (cos_inner_ + cos_outer_)));
-  }
+  /// falloff over the sphere is 2 pi (1 - c_inner + (c_inner - c_outer) / 2), which is
+  /// pi (h_inner + h_outer).
+  Color power(float) const override { return intensity_ * (kPi * (h_inner_ + h_outer_)); }
   bool is_delta() const override { return true; }
 
  private:
   Vec3f position_, axis_;
   Color intensity_;
-  float cos_inner_ = 1.0f, cos_outer_ = 1.0f;
+  float h_inner_ = 0.0f, h_outer_ = 0.0f;  // 1 - cos of each cone's half-angle
 };
 // [ch13-spot]
 
