@@ -229,4 +229,8 @@ TEST_CASE("ch11: one_minus_cos keeps its digits for small angles") {
   CHECK(std::fabs((1.0f - std::cos(sun)) / one_minus_cos(sun) - 1) > 1e-3);  // the classic loss
   CHECK(1.0f - std::cos(1e-4f) == 0.0f);
   CHECK(one_minus_cos(1e-4f) > 0.0f);
+  // Between two unit vectors 1e-4 radians apart, where their dot product rounds to 1.
+  const Vec3f a{0, 0, 1}, b{std::sin(1e-4f), 0, std::cos(1e-4f)};
+  CHECK(dot(a, b) == 1.0f);
+  CHECK(one_minus_cos_between(a, b) == doctest::Approx(one_minus_cos(1e-4f)).epsilon(1e-6).scale(0));
 }

@@ -103,6 +103,14 @@ inline float one_minus_cos(float theta) {
   return 2.0f * s * s;
 }
 
+/// 1 - cos of the angle between unit vectors a and b, as |a - b|^2 / 2: the difference of two
+/// nearly equal vectors is exact, component by component, where their dot product would round
+/// to 1. Lights use it to tell whether a direction lies inside a narrow cone.
+inline float one_minus_cos_between(Vec3f a, Vec3f b) {
+  const Vec3f d = a - b;
+  return 0.5f * dot(d, d);
+}
+
 /// A uniform direction in the cone of directions within angle theta_max of +z, the cone given
 /// by h = 1 - cos(theta_max) (one_minus_cos): the sphere's construction with z restricted to
 /// [1 - h, 1]. It draws 1 - z = u h rather than z, and the sine from it as sqrt((1 - z)(1 + z)),

@@ -50,12 +50,7 @@ class DistantLight final : public Light {
   bool is_infinite() const override { return true; }
 
  private:
-  /// |w - n|^2 / 2 = 1 - cos theta for unit w and n: the difference of nearly equal vectors is
-  /// exact, component by component, where their dot product would round to 1.
-  bool inside(Vec3f wi) const {
-    const Vec3f d = normalize(wi) - frame_.n;
-    return 0.5f * dot(d, d) <= one_minus_cos_max_;
-  }
+  bool inside(Vec3f wi) const { return one_minus_cos_between(normalize(wi), frame_.n) <= one_minus_cos_max_; }
   Frame frame_;  // n: the direction toward the light
   Color radiance_;
   float one_minus_cos_max_ = 0.0f;

@@ -75,12 +75,11 @@ class SpotLight final : public Light {
     h_outer_ = one_minus_cos(outer_degrees * kPi / 180.0f);
   }
   /// The fraction of the intensity emitted along the unit direction `w` (away from the light):
-  /// linear in cos(theta) between the cones, here in h = 1 - cos(theta), which keeps its
-  /// digits for a beam narrower than a float cosine can tell from 1 (chapter 11's
-  /// one_minus_cos; |w - axis|^2 / 2 is 1 - cos(theta) for unit vectors).
+  /// linear in cos(theta) between the cones, here in h = 1 - cos(theta) (chapter 11's
+  /// one_minus_cos_between), which keeps its digits for a beam narrower than a float cosine
+  /// can tell from 1.
   float falloff(Vec3f w) const {
-    const Vec3f d = w - axis_;
-    const float h = 0.5f * dot(d, d);
+    const float h = one_minus_cos_between(w, axis_);
     if (h <= h_inner_) return 1.0f;
     if (h >= h_outer_) return 0.0f;
     return (h_outer_ - h) / (h_outer_ - h_inner_);

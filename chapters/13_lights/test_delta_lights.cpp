@@ -1,12 +1,12 @@
 // Chapter 13 tests: point, directional, distant (cone) and ambient lights.
 #include <doctest/doctest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
 #include "11_sampling/chi_square.h"
 #include "11_sampling/frame.h"
@@ -94,8 +94,9 @@ TEST_CASE("ch13: a spot light narrower than a float cosine can tell still shines
   const double inner = 0.005 * std::numbers::pi / 180, outer = 0.01 * std::numbers::pi / 180;
   const double h_in = 1 - std::cos(inner), h_out = 1 - std::cos(outer);
   const SpotLight light(p, axis, Color(1), 0.005f, 0.01f);
-  // (Relative: doctest's Approx would take any value this small for another.)
-  CHECK(std::fabs(light.power(1).r / (std::numbers::pi * (h_in + h_out)) - 1) < 1e-4);
+  // Relative bounds (scale 0): with its default scale of 1, doctest's Approx would take any
+  // value this small for another.
+  CHECK(light.power(1).r == doctest::Approx(std::numbers::pi * (h_in + h_out)).epsilon(1e-4).scale(0));
   const Frame around(axis);
   auto off_axis = [&](double a) { return around.to_world(Vec3f{float(std::sin(a)), 0.0f, float(std::cos(a))}); };
   CHECK(light.falloff(off_axis(0.5 * inner)) == 1.0f);
@@ -190,8 +191,8 @@ TEST_CASE("ch13: a distant light as small as the sun, or a star, still fills its
     }
     INFO("half-angle ", degrees, " degrees");
     CHECK(worst_excess < 1e-7);
-    // Relative errors: doctest's Approx would take any value as small as these for another.
-    CHECK(std::fabs(irradiance / kN / (2 * std::numbers::pi * sin2) - 1) < 1e-3);
+    // Relative bounds (scale 0), as for the narrow spot above.
+    CHECK(irradiance / kN == doctest::Approx(2 * std::numbers::pi * sin2).epsilon(1e-3).scale(0));
     const chi2::Result r = chi2::pearson(counts, std::vector<double>(kBins, double(kN) / kBins));
     if (chi2::report_enabled())
       std::printf("ch13 chi2 distant light %-7g deg %s\n", degrees, r.summary().c_str());
@@ -204,7 +205,7 @@ TEST_CASE("ch13: a distant light as small as the sun, or a star, still fills its
       CHECK((light.pdf_li({}, wi) > 0) == (off < 1));
     }
     const double power = light.power(1.0f).r;  // through a cross-section of radius 1
-    CHECK(std::fabs(power / (2 * std::numbers::pi * std::numbers::pi * sin2) - 1) < 1e-4);
+    CHECK(power == doctest::Approx(2 * std::numbers::pi * std::numbers::pi * sin2).epsilon(1e-4).scale(0));
   }
 }
 
