@@ -215,6 +215,28 @@ TEST_CASE("ch11: cosine-weighted directions are unit vectors with the disk point
   CHECK(worst_height < 4e-7);
 }
 
+TEST_CASE("ch11: uniform sphere and hemisphere directions keep their angle at the poles") {
+  // Distances u from 1e-12 to 2^-10 from a pole, in steps of 0.1 %, against the polar angle of
+  // the same u in double precision: the sine taken as sqrt(1 - z^2) from the rounded height
+  // sends every u below 2^-26 to the pole itself, 2.4e-4 radians off for the largest of them.
+  double worst_sphere = 0.0, worst_hemisphere = 0.0;
+  const auto polar_error = [](Vec3f w, double sin_exact, double cos_exact) {
+    const double sin_w = std::sqrt(double(w.x) * w.x + double(w.y) * w.y);
+    return std::fabs(std::atan2(sin_w, double(w.z)) - std::atan2(sin_exact, cos_exact));
+  };
+  for (float u = 1e-12f; u < 0x1p-10f; u *= 1.001f) {
+    for (const float v : {u, 1.0f - u}) {  // near the north and the south pole
+      const double cos_exact = 1.0 - 2.0 * v, sin_exact = 2.0 * std::sqrt(double(v) * (1.0 - v));
+      worst_sphere = std::max(worst_sphere, polar_error(sample_uniform_sphere({v, 0.3f}), sin_exact, cos_exact));
+    }
+    const float z = 1.0f - u;
+    const double sin_exact = std::sqrt((1.0 - z) * (1.0 + z));
+    worst_hemisphere = std::max(worst_hemisphere, polar_error(sample_uniform_hemisphere({z, 0.3f}), sin_exact, z));
+  }
+  CHECK(worst_sphere < 1e-7);
+  CHECK(worst_hemisphere < 1e-7);
+}
+
 TEST_CASE("ch11: one_minus_cos keeps its digits for small angles") {
   // Against the double-precision 2 sin^2(theta / 2), from 1e-7 radians (six millionths of a
   // degree) to pi: a few float ulps of relative error throughout, where 1 - std::cos in float

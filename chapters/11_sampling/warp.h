@@ -77,18 +77,22 @@ inline float pdf_cosine_hemisphere(float cos_theta) {
 }
 // [ch11-cosine]
 
-/// A uniform direction on the upper hemisphere (z >= 0): z = u.x, phi = 2 pi u.y.
+/// A uniform direction on the upper hemisphere (z >= 0): z = u.x, phi = 2 pi u.y. The sine is
+/// sqrt((1 - z)(1 + z)), whose factors are exact or nearly, not sqrt(1 - z^2), which rounds
+/// z^2 first and loses the digits of a small sine near the pole.
 inline Vec3f sample_uniform_hemisphere(Vec2f u) {
-  const float z = u.x, r = safe_sqrt(1.0f - z * z), phi = 2.0f * kPi * u.y;
+  const float z = u.x, r = safe_sqrt((1.0f - z) * (1.0f + z)), phi = 2.0f * kPi * u.y;
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 /// The density of sample_uniform_hemisphere: 1 / (2 pi).
 inline constexpr float pdf_uniform_hemisphere() { return 0.5f * kInvPi; }
 
 /// A uniform direction on the unit sphere: z uniform in [-1, 1] (Archimedes: equal heights
-/// cut equal areas), phi uniform.
+/// cut equal areas), phi uniform. The sine comes from u rather than from the rounded z:
+/// 1 - z^2 = 4u(1 - u), so that a u too small to move z off 1 still moves the direction off
+/// the pole.
 inline Vec3f sample_uniform_sphere(Vec2f u) {
-  const float z = 1.0f - 2.0f * u.x, r = safe_sqrt(1.0f - z * z), phi = 2.0f * kPi * u.y;
+  const float z = 1.0f - 2.0f * u.x, r = 2.0f * safe_sqrt(u.x * (1.0f - u.x)), phi = 2.0f * kPi * u.y;
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 /// The density of sample_uniform_sphere: 1 / (4 pi).
