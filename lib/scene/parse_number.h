@@ -53,7 +53,23 @@ inline float parse_float(std::string_view token, const Where& where, std::string
   const char* last = first + token.size();
   if (first != last && *first == '+') ++first;
   float value = 0.0f;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
+  auto [ptr, ec] = std::from_chars(first, last, value);
+  // Beyond a float's range, read as a double (as the OBJ reader does): a number too close to 0
+  // (1e-50) becomes the float it rounds to, a signed 0, and one too large (1e40) is said to be
+  // too large, not malformed.
+  bool too_large = false;
+  if (ec == std::errc::result_out_of_range) {
+    double wide = 0.0;
+    const auto [wide_ptr, wide_ec] = std::from_chars(first, last, wide);
+    if (wide_ec == std::errc::result_out_of_range && wide_ptr == last)
+      fail(where, std::string(what) + ": '" + shown(token) + "' is out of range");
+    ptr = wide_ptr;
+    ec = wide_ec;
+    value = static_cast<float>(wide);
+    too_large = ec == std::errc() && ptr == last && std::isinf(value);
+  }
+  if (too_large)
+    fail(where, std::string(what) + ": " + shown(token) + " is beyond a float's range (3.4e38)");
   if (ec != std::errc() || ptr != last || !std::isfinite(value))
     fail(where, std::string(what) + ": '" + shown(token) + "' is not a finite number");
   if (value < min || value > max) {
@@ -72,11 +88,12 @@ inline long long parse_int(std::string_view token, const Where& where, std::stri
   if (first != last && *first == '+') ++first;
   long long value = 0;
   const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (ec != std::errc() || ptr != last)
+  const bool too_large = ec == std::errc::result_out_of_range && ptr == last;  // beyond 2^63
+  if (!too_large && (ec != std::errc() || ptr != last))
     fail(where, std::string(what) + ": '" + shown(token) + "' is not an integer");
-  if (value < min || value > max)
-    fail(where, std::string(what) + ": " + std::to_string(value) + " is not from " +
-                    std::to_string(min) + " to " + std::to_string(max));
+  if (too_large || value < min || value > max)
+    fail(where, std::string(what) + ": " + shown(token) + " is not from " + std::to_string(min) +
+                    " to " + std::to_string(max));
   return value;
 }
 

@@ -122,12 +122,14 @@ class ScriptReader {
   // radiance, a bad configuration string) into an error at the option's place.
   // A file the option names that cannot be read or is not a valid image is reported at the
   // option's place too, with the file's own message.
+  // The message names the option; the place is that of `value` where the fault is in the
+  // value the option was given (an unknown sampler's name).
   template <class Body>
-  void at(const Token& option, Body&& body) {
+  void at(const Token& option, Body&& body, const Token* value = nullptr) {
     try {
       body();
     } catch (const std::exception& e) {
-      fail(option.where, option.text + ": " + e.what());
+      fail((value ? *value : option).where, option.text + ": " + e.what());
     }
   }
   void include(const Token& option) {
@@ -335,10 +337,10 @@ class ScriptReader {
       s_.kernels = t.text;
     } else if (name == "-sampler") {
       const Token& t = take(o, "a sampler name");
-      at(t, [&] { s_.options.sampler = parse_sampler_type(t.text); });
+      at(o, [&] { s_.options.sampler = parse_sampler_type(t.text); }, &t);
     } else if (name == "-filter") {
       const Token& t = take(o, "a filter name");
-      at(t, [&] { s_.options.filter = parse_filter_type(t.text); });
+      at(o, [&] { s_.options.filter = parse_filter_type(t.text); }, &t);
     } else if (name == "-ambientlight") {
       const Color l = color(o);
       at(o, [&] { sc.add_light(std::make_shared<AmbientLight>(l)); });

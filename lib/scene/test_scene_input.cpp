@@ -167,6 +167,37 @@ TEST_CASE("lib_scene: every value of a script is checked for range where it is r
                        doctest::Contains("command line, argument 3: -radius"), FileError);
 }
 
+TEST_CASE("lib_scene: a number out of range is reported as out of range, a name as unknown") {
+  // A number too large for its type is still a number: the message says it is too large (an
+  // integer's, the range it should be in) rather than calling 1e40 not a number. An unknown
+  // name is reported under the option that was given it.
+  Scratch s;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"-fov 1e40", "-fov: 1e40 is beyond a float's range (3.4e38)"},
+      {"-gamma -1e300", "-gamma: -1e300 is beyond a float's range"},
+      {"-spp 99999999999999999999", "-spp: 99999999999999999999 is not from 1 to 1048576"},
+      {"-seed -99999999999999999999", "-seed: -99999999999999999999 is not from 0 to 4294967295"},
+      {"-fov 1e4x", "-fov: '1e4x' is not a finite number"},
+      {"-fov 1e40x", "-fov: '1e40x' is not a finite number"},
+      {"-spp 9x", "-spp: '9x' is not an integer"},
+      {"-sampler halton", "-sampler: unknown sampler 'halton' (supported: independent, sobol)"},
+      {"-filter gauss", "-filter: unknown pixel filter 'gauss' (supported: box, tent, bspline)"},
+      {"-time 1e-50", "-time: 1e-50 seconds is not above 0"}};  // a float 0, then checked
+  for (const auto& [text, message] : cases) {
+    INFO(text);
+    const Failure f = script_error(s, "-spp 1\n" + text + "\n");
+    CHECK(f.line == 2);
+    CHECK(has(f.what, message));
+  }
+  // Too close to 0 for a float: the float's 0. Beyond a double's range, as in OBJ files: out of range.
+  for (const std::string& tiny : {"1e-50", "-1e-50"}) {
+    INFO(tiny);
+    CHECK(script_error(s, "-pointlight 0 0 0 " + tiny + " 1 1\n").what.empty());
+  }
+  CHECK(has(script_error(s, "-gamma 1e400\n").what, "-gamma: '1e400' is out of range"));
+  CHECK(has(script_error(s, "-gamma 1e-400\n").what, "-gamma: '1e-400' is out of range"));
+}
+
 TEST_CASE("lib_scene: options checked after reading carry the place where they were given") {
   Scratch s;
   rtk::SceneScript script;
