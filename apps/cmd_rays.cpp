@@ -31,6 +31,7 @@ int run_rays(std::span<const std::string_view> args) {
   const uint64_t seed = options.get_count("seed", 1, 0, std::numeric_limits<uint64_t>::max());
   const std::string output = options.required("o");
   check_output_option("o", output);
+  check_not_an_input("o", output, "the input of -i", scene);
 
   const TriangleMesh mesh = load_obj(scene);
   Timer timer;

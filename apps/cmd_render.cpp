@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -65,10 +66,19 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
   ViewerOptions viewer;  // -frames, -screenshot: the viewer's own (chapter 16)
   const std::vector<std::string_view> script_args = take_viewer_options(args, viewer);
   read_script_args(script_args, script, [](const std::string& w) { std::fprintf(stderr, "rtk render: warning: %s\n", w.c_str()); });
+  // No image may be written over a file the command reads: a script, a mesh, an image the
+  // scene shows, the reference.
+  auto check_not_read = [&](const char* option, const std::string& output) {
+    for (const std::filesystem::path& input : script.files)
+      check_not_an_input(option, output, "a file the scene reads", input);
+    if (!script.reference.empty())
+      check_not_an_input(option, output, "the image of -reference", script.reference);
+  };
   // No -o: the guide's interactive mode, the viewer (chapter 16), for `rtk -c` and `rtk view`.
   if (script.output_states.empty() && viewer_without_output) {
     if (script.time_limit > 0 || !script.reference.empty())
       throw UsageError("-time and -reference are for rendering to a file (-o), not the viewer");
+    if (!viewer.screenshot.empty()) check_not_read("screenshot", viewer.screenshot);
     return run_viewer(script, viewer);
   }
   if (script.output_states.empty())
@@ -83,6 +93,7 @@ int run_render(std::span<const std::string_view> args, bool viewer_without_outpu
     } catch (const std::exception& e) {
       throw UsageError(std::string("-o: ") + e.what());
     }
+    check_not_read("o", out.path.string());
   }
   // -reference: the converged image is read before any work, so that an unreadable one stops
   // the command at once, and its size is checked against every image the script renders.

@@ -22,6 +22,14 @@ void check_output_option(const char* option, const std::string& path) {
   }
 }
 
+void check_not_an_input(const char* option, const std::string& output, const std::string& input_role,
+                        const std::filesystem::path& input) {
+  std::error_code ec;  // set, and the answer false, when either file does not exist
+  if (std::filesystem::equivalent(output, input, ec))
+    throw UsageError(std::string("-") + option + ": " + output + " is also " + input_role +
+                     "; writing it would destroy that file");
+}
+
 void check_stdout() {
   const int flags = ::fcntl(STDOUT_FILENO, F_GETFL);
   if (flags < 0) throw std::runtime_error("stdout is closed: the results would be lost");

@@ -275,6 +275,36 @@ TEST_CASE("cli: bad command lines fail with status 2 and name the option or file
   }
 }
 
+TEST_CASE("cli: an output that names one of the command's inputs is refused, the input kept") {
+  // Writing the rays over the scene they were made from, or the hits over the rays, would
+  // destroy a file the command has just read: refused before any work, whatever the spelling
+  // (a second path, a hard link), and the input is left as it was.
+  const std::string mesh = work("keep.obj"), rays = work("keep.rays");
+  rtk::write_file(mesh, rtk::read_file(scene_file()));
+  REQUIRE(run_rtk("rays -i " + mesh + " -kind diffuse -n 100 -o " + rays).status == 0);
+  const std::string mesh_bytes = rtk::read_file(mesh), rays_bytes = rtk::read_file(rays);
+  fs::remove(work("link.obj"));
+  fs::create_hard_link(mesh, work("link.obj"));
+  const std::string other_spelling = (fs::path(mesh).parent_path() / "." / "keep.obj").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + mesh, "-o: " + mesh + " is also the input of -i"},
+      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + other_spelling, "is also the input of -i"},
+      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + work("link.obj"), "is also the input of -i"},
+      {"trace -i " + mesh + " -rays " + rays + " -hits " + rays, "-hits: " + rays + " is also the input of -rays"},
+      {"trace -i " + mesh + " -rays " + rays + " -occl " + mesh, "-occl: " + mesh + " is also the input of -i"},
+      {"trace -i " + mesh + " -motion " + mesh + " -rays " + rays + " -hits " + work("link.obj"), "is also the input of -i"},
+  };
+  for (const auto& [args, words] : cases) {
+    CAPTURE(args);
+    const Result r = run_rtk(args);
+    CAPTURE(r.output);
+    CHECK(r.status == 2);
+    CHECK(contains(r.output, words));
+  }
+  CHECK(rtk::read_file(mesh) == mesh_bytes);
+  CHECK(rtk::read_file(rays) == rays_bytes);
+}
+
 namespace {
 
 // The CLI scene in linear motion: the sphere flies by 0.3 along x, every third soup vertex

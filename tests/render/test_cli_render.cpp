@@ -10,6 +10,7 @@
 
 #include "image/image_error.h"
 #include "image/image_io.h"
+#include "io/read_file.h"
 #include "render_test_support.h"
 #include "testing/run_program.h"
 
@@ -260,6 +261,14 @@ TEST_CASE("ch14: rtk render -reference prints the relative RMS error against a c
   refused("-time -1", "-time");
   refused("-time nan", "-time: 'nan' is not a finite number");
   refused("-time 0", "-time: 0 seconds is not above 0");
+  {  // The reference, or an image the scene shows, is not written over: it is kept as it was.
+    const std::string ref_bytes = rtk::read_file(ref);
+    refused("-spp 1 -reference " + ref.string() + " -o " + ref.string(),
+            "-o: " + ref.string() + " is also the image of -reference");
+    refused("-spp 1 -backplate " + ref.string() + " -o " + ref.string(),
+            "-o: " + ref.string() + " is also a file the scene reads");
+    CHECK(rtk::read_file(ref) == ref_bytes);
+  }
   {  // -time with nothing after it: the last argument
     const Result bad = run_rtk(common + "-o " + out.string() + " -time");
     INFO(bad.output);
