@@ -57,19 +57,19 @@ inline float parse_float(std::string_view token, const Where& where, std::string
   // Beyond a float's range, read as a double (as the OBJ reader does): a number too close to 0
   // (1e-50) becomes the float it rounds to, a signed 0, and one too large (1e40) is said to be
   // too large, not malformed.
-  bool too_large = false;
   if (ec == std::errc::result_out_of_range) {
     double wide = 0.0;
     const auto [wide_ptr, wide_ec] = std::from_chars(first, last, wide);
-    if (wide_ec == std::errc::result_out_of_range && wide_ptr == last)
+    if (wide_ptr == last && wide_ec == std::errc::result_out_of_range)
       fail(where, std::string(what) + ": '" + shown(token) + "' is out of range");
-    ptr = wide_ptr;
-    ec = wide_ec;
-    value = static_cast<float>(wide);
-    too_large = ec == std::errc() && ptr == last && std::isinf(value);
+    if (wide_ptr == last && wide_ec == std::errc()) {
+      value = static_cast<float>(wide);
+      if (std::isinf(value))
+        fail(where, std::string(what) + ": " + shown(token) + " is beyond a float's range (3.4e38)");
+      ptr = wide_ptr;
+      ec = wide_ec;
+    }
   }
-  if (too_large)
-    fail(where, std::string(what) + ": " + shown(token) + " is beyond a float's range (3.4e38)");
   if (ec != std::errc() || ptr != last || !std::isfinite(value))
     fail(where, std::string(what) + ": '" + shown(token) + "' is not a finite number");
   if (value < min || value > max) {
