@@ -175,6 +175,20 @@ TEST_CASE("ch11: spherical coordinates invert the direction map") {
       CHECK(spherical_theta(w) == doctest::Approx(theta).epsilon(1e-5));
       CHECK(spherical_phi(w) == doctest::Approx(phi).epsilon(1e-5));
     }
+  // Near either pole, from 1e-7 to 0.1 radians away, the polar angle keeps its accuracy:
+  // relative near +z, within two float steps of pi near -z. acos of the height, which rounds
+  // to a float within 6e-8 of 1 in magnitude, would be off by up to 2.4e-4 radians at both.
+  double worst_north = 0.0, worst_south = 0.0;
+  for (double t = 1e-7; t < 0.1; t *= 1.01) {
+    const Vec3f north{float(std::sin(t)), 0.0f, float(std::cos(t))}, south{north.x, 0.0f, -north.z};
+    // The exact angles of the float directions.
+    const double exact_north = std::atan2(double(north.x), double(north.z));
+    const double exact_south = std::atan2(double(south.x), double(south.z));
+    worst_north = std::max(worst_north, std::fabs(spherical_theta(north) / exact_north - 1.0));
+    worst_south = std::max(worst_south, std::fabs(spherical_theta(south) - exact_south));
+  }
+  CHECK(worst_north < 1e-6);
+  CHECK(worst_south < 5e-7);
 }
 
 TEST_CASE("ch11: the disk map's cosine and sine agree with the library's") {

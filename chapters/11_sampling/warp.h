@@ -141,8 +141,11 @@ inline Vec3f sample_uniform_triangle(Vec2f u) {
 }
 // [ch11-triangle]
 
-/// Spherical coordinates of a unit direction: theta from +z in [0, pi], phi in [0, 2 pi).
-inline float spherical_theta(Vec3f w) { return std::acos(std::clamp(w.z, -1.0f, 1.0f)); }
+/// Spherical coordinates of a direction: theta from +z in [0, pi], phi in [0, 2 pi). The polar
+/// angle is atan2 of the sideways length and the height, not acos of the height: near a pole
+/// the height rounds to a float within 6e-8 of 1 in magnitude, and acos of it would put every
+/// direction within 2.4e-4 radians of the pole on the pole itself.
+inline float spherical_theta(Vec3f w) { return std::atan2(std::sqrt(w.x * w.x + w.y * w.y), w.z); }
 /// The azimuth of a direction in [0, 2 pi), measured from +x toward +y.
 inline float spherical_phi(Vec3f w) {
   const float p = std::atan2(w.y, w.x);

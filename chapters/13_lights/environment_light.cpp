@@ -89,10 +89,9 @@ Vec3f EnvironmentLight::direction(Vec2f uv) const {
 Vec2f EnvironmentLight::coordinates(Vec3f w) const {
   Vec3f d = frame_to_map(frame_.to_local(w));
   if (mapping_ == EnvironmentMapping::embree11) d.z = -d.z;
-  // atan2 rather than acos: near the poles acos(y) has lost the angle to rounding.
-  const float theta = std::atan2(std::sqrt(d.x * d.x + d.z * d.z), d.y);
-  float phi = std::atan2(d.z, d.x);
-  if (phi < 0.0f) phi += 2.0f * kPi;
+  // The map's pole is its y axis, its azimuth measured from x toward z.
+  const Vec3f polar{d.x, d.z, d.y};
+  const float theta = spherical_theta(polar), phi = spherical_phi(polar);
   return {std::min(phi / (2.0f * kPi), 0x1.fffffep-1f), std::min(theta / kPi, 0x1.fffffep-1f)};
 }
 
