@@ -48,8 +48,9 @@ int run_trace(std::span<const std::string_view> args) {
                                   : "missing option -hits or -occl (what to write)");
   const std::string output = want_hits ? options.required("hits") : options.required("occl");
   check_output_option(want_hits ? "hits" : "occl", output);
-  const std::pair<const char*, std::string> inputs[] = {
-      {"the input of -i", scene}, {"the input of -motion", motion_scene}, {"the input of -rays", rays_file}};
+  const std::pair<const char*, std::string> inputs[] = {{"the input of -i", scene},
+                                                        {"the input of -motion", motion_scene},
+                                                        {"the input of -rays", rays_file}};
   for (const auto& [role, input] : inputs)
     if (!input.empty()) check_not_an_input(want_hits ? "hits" : "occl", output, role, input);
   AccelConfig config;

@@ -22,8 +22,8 @@ void check_output_option(const char* option, const std::string& path) {
   }
 }
 
-void check_not_an_input(const char* option, const std::string& output, const std::string& input_role,
-                        const std::filesystem::path& input) {
+void check_not_an_input(const char* option, const std::string& output,
+                        const std::string& input_role, const std::filesystem::path& input) {
   std::error_code ec;  // set, and the answer false, when either file does not exist
   if (std::filesystem::equivalent(output, input, ec))
     throw UsageError(std::string("-") + option + ": " + output + " is also " + input_role +

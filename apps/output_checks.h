@@ -20,8 +20,8 @@ void check_output_option(const char* option, const std::string& path);
 /// of -i"). Files are compared as the system knows them, so that another spelling of the path,
 /// a symbolic or a hard link is caught too; an output that does not exist yet is no input.
 /// The input was read by the time the output is written, but it would be gone.
-void check_not_an_input(const char* option, const std::string& output, const std::string& input_role,
-                        const std::filesystem::path& input);
+void check_not_an_input(const char* option, const std::string& output,
+                        const std::string& input_role, const std::filesystem::path& input);
 
 /// Throws std::runtime_error when standard output is closed or not open for writing.
 void check_stdout();

@@ -241,11 +241,13 @@ TEST_CASE("ch11: uniform sphere and hemisphere directions keep their angle at th
   for (float u = 1e-12f; u < 0x1p-10f; u *= 1.001f) {
     for (const float v : {u, 1.0f - u}) {  // near the north and the south pole
       const double cos_exact = 1.0 - 2.0 * v, sin_exact = 2.0 * std::sqrt(double(v) * (1.0 - v));
-      worst_sphere = std::max(worst_sphere, polar_error(sample_uniform_sphere({v, 0.3f}), sin_exact, cos_exact));
+      worst_sphere = std::max(worst_sphere,
+                              polar_error(sample_uniform_sphere({v, 0.3f}), sin_exact, cos_exact));
     }
     const float z = 1.0f - u;
     const double sin_exact = std::sqrt((1.0 - z) * (1.0 + z));
-    worst_hemisphere = std::max(worst_hemisphere, polar_error(sample_uniform_hemisphere({z, 0.3f}), sin_exact, z));
+    worst_hemisphere =
+        std::max(worst_hemisphere, polar_error(sample_uniform_hemisphere({z, 0.3f}), sin_exact, z));
   }
   CHECK(worst_sphere < 1e-7);
   CHECK(worst_hemisphere < 1e-7);

@@ -92,7 +92,8 @@ inline constexpr float pdf_uniform_hemisphere() { return 0.5f * kInvPi; }
 /// 1 - z^2 = 4u(1 - u), so that a u too small to move z off 1 still moves the direction off
 /// the pole.
 inline Vec3f sample_uniform_sphere(Vec2f u) {
-  const float z = 1.0f - 2.0f * u.x, r = 2.0f * safe_sqrt(u.x * (1.0f - u.x)), phi = 2.0f * kPi * u.y;
+  const float z = 1.0f - 2.0f * u.x, r = 2.0f * safe_sqrt(u.x * (1.0f - u.x)),
+              phi = 2.0f * kPi * u.y;
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 /// The density of sample_uniform_sphere: 1 / (4 pi).

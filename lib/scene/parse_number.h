@@ -65,7 +65,8 @@ inline float parse_float(std::string_view token, const Where& where, std::string
     if (wide_ptr == last && wide_ec == std::errc()) {
       value = static_cast<float>(wide);
       if (std::isinf(value))
-        fail(where, std::string(what) + ": " + shown(token) + " is beyond a float's range (3.4e38)");
+        fail(where,
+             std::string(what) + ": " + shown(token) + " is beyond a float's range (3.4e38)");
       ptr = wide_ptr;
       ec = wide_ec;
     }

@@ -189,7 +189,7 @@ TEST_CASE("lib_scene: a number out of range is reported as out of range, a name 
     CHECK(f.line == 2);
     CHECK(has(f.what, message));
   }
-  // Too close to 0 for a float: the float's 0. Beyond a double's range, as in OBJ files: out of range.
+  // Too close to 0 for a float: the float's 0. Beyond a double's range, as in OBJ files: an error.
   for (const std::string tiny : {"1e-50", "-1e-50"}) {
     INFO(tiny);
     CHECK(script_error(s, "-pointlight 0 0 0 " + tiny + " 1 1\n").what.empty());

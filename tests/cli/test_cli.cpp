@@ -287,12 +287,17 @@ TEST_CASE("cli: an output that names one of the command's inputs is refused, the
   fs::create_hard_link(mesh, work("link.obj"));
   const std::string other_spelling = (fs::path(mesh).parent_path() / "." / "keep.obj").string();
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + mesh, "-o: " + mesh + " is also the input of -i"},
+      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + mesh,
+       "-o: " + mesh + " is also the input of -i"},
       {"rays -i " + mesh + " -kind diffuse -n 10 -o " + other_spelling, "is also the input of -i"},
-      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + work("link.obj"), "is also the input of -i"},
-      {"trace -i " + mesh + " -rays " + rays + " -hits " + rays, "-hits: " + rays + " is also the input of -rays"},
-      {"trace -i " + mesh + " -rays " + rays + " -occl " + mesh, "-occl: " + mesh + " is also the input of -i"},
-      {"trace -i " + mesh + " -motion " + mesh + " -rays " + rays + " -hits " + work("link.obj"), "is also the input of -i"},
+      {"rays -i " + mesh + " -kind diffuse -n 10 -o " + work("link.obj"),
+       "is also the input of -i"},
+      {"trace -i " + mesh + " -rays " + rays + " -hits " + rays,
+       "-hits: " + rays + " is also the input of -rays"},
+      {"trace -i " + mesh + " -rays " + rays + " -occl " + mesh,
+       "-occl: " + mesh + " is also the input of -i"},
+      {"trace -i " + mesh + " -motion " + mesh + " -rays " + rays + " -hits " + work("link.obj"),
+       "is also the input of -i"},
   };
   for (const auto& [args, words] : cases) {
     CAPTURE(args);
