@@ -74,6 +74,18 @@ const std::string& scene_file() {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// Each command line must fail with status 2 and a message from rtk that holds its words.
+void check_refused(const std::vector<std::pair<std::string, std::string>>& cases) {
+  for (const auto& [args, words] : cases) {
+    CAPTURE(args);
+    const Result r = run_rtk(args);
+    CAPTURE(r.output);
+    CHECK(r.status == 2);
+    CHECK(contains(r.output, words));
+    CHECK(r.output.starts_with("rtk"));
+  }
+}
+
 // Every configuration the API accepts, on every ISA the CPU runs.
 struct Config {
   std::string accel, tri, isa;
@@ -265,14 +277,7 @@ TEST_CASE("cli: bad command lines fail with status 2 and name the option or file
       {"info -isa mmx", "-isa"},
       {"nosuchcommand", "unknown command 'nosuchcommand'"},
   };
-  for (const auto& [args, words] : cases) {
-    CAPTURE(args);
-    const Result r = run_rtk(args);
-    CAPTURE(r.output);
-    CHECK(r.status == 2);
-    CHECK(contains(r.output, words));
-    CHECK(r.output.starts_with("rtk"));
-  }
+  check_refused(cases);
 }
 
 TEST_CASE("cli: an output that names one of the command's inputs is refused, the input kept") {
@@ -299,13 +304,7 @@ TEST_CASE("cli: an output that names one of the command's inputs is refused, the
       {"trace -i " + mesh + " -motion " + mesh + " -rays " + rays + " -hits " + work("link.obj"),
        "is also the input of -i"},
   };
-  for (const auto& [args, words] : cases) {
-    CAPTURE(args);
-    const Result r = run_rtk(args);
-    CAPTURE(r.output);
-    CHECK(r.status == 2);
-    CHECK(contains(r.output, words));
-  }
+  check_refused(cases);
   CHECK(rtk::read_file(mesh) == mesh_bytes);
   CHECK(rtk::read_file(rays) == rays_bytes);
 }
