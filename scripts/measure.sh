@@ -454,6 +454,27 @@ embree_build_threads() {
 section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
   build bench_embree
   embree_build_threads embree_build book/embree_build_threads.md
+  run_section embree_scaling
+}
+
+section_embree_scaling() { # what two threads give RTK's default build and Embree's, each measured in pairs with one thread: the real meshes, and terrains of 1M, 4M and 16M triangles
+  build bench_embree
+  local meshes size round runs=()
+  meshes=$(embree_meshes)
+  # Every iteration builds with one thread and then with two, back to back, for both builders;
+  # two rounds, whose range the table gives.
+  for round in 1 2; do
+    RTK_SCENES=$meshes gbench embree_scaling_meshes_$round "$B/bench/bench_embree" --scaling \
+      --procedural=0 --threads=2 --benchmark_min_time=1
+    runs+=("$OUT/embree_scaling_meshes_$round.json")
+    for size in 8 32 128; do
+      RTK_SCENES= gbench embree_scaling_terrain${size}_$round "$B/bench/bench_embree" --scaling \
+        --procedural=terrain --size=$size --threads=2 --benchmark_min_time=$((size / 8 + 2))
+      runs+=("$OUT/embree_scaling_terrain${size}_$round.json")
+    done
+  done
+  table embree_scaling book/embree_build_scaling.md python3 bench/embree/summary.py scaling "${runs[@]}"
+  cat book/embree_build_scaling.md
 }
 
 section_embree_second() { # RTK's default kernels and builds (one and two threads, meshes and terrains) against Embree once more, for the standing on a second machine
@@ -475,7 +496,7 @@ section_embree_second() { # RTK's default kernels and builds (one and two thread
 # embree_second is the Embree comparison's part for a second machine.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
-       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_second)
+       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_scaling embree_second)
 
 # --- the machine ------------------------------------------------------------------------------
 

@@ -4,7 +4,7 @@
 //
 //   build/bench/embree/bench_embree [--rays=N] [--threads=N] [--scenes=A.obj,B.obj|DIR]
 //                                   [--procedural=0|1|NAME] [--size=F] [--rtk=default|all]
-//                                   [--embree-isa=sse4.2|avx2|...] [--builds-only]
+//                                   [--embree-isa=sse4.2|avx2|...] [--builds-only | --scaling]
 //                                   [benchmark options]
 //   RTK_SCENES=../shared/scenes/bunny_stanford_full build/bench/embree/bench_embree
 //
@@ -21,7 +21,9 @@
 // bench/embree/make_table.sh turns the JSON output into the markdown table. --builds-only runs
 // nothing but RTK's default build paired with Embree's, per scene (scripts/measure.sh
 // embree_build runs it on one and two threads, on the real meshes and on terrains of 1M, 4M
-// and 16M triangles).
+// and 16M triangles). --scaling runs nothing but the default build with one thread and with
+// --threads, back to back in every iteration, and Embree's likewise: each one's gain from the
+// threads, measured in pairs (counters rtk_scaling and embree_scaling).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -57,6 +59,7 @@ struct Settings {
   std::string embree_isa;  // empty: Embree's best for the CPU; else its max_isa option
   double size = 1.0;       // scale of the procedural scenes' triangle counts
   bool builds_only = false;  // only RTK's default build, paired with Embree's
+  bool scaling = false;      // only the default build's gain from --threads, paired as above
 
   std::vector<std::filesystem::path> scene_files;
 };
@@ -187,6 +190,38 @@ void build_rtk(benchmark::State& state, Scene* s, AccelConfig config) {
   state.counters["triangles"] = double(s->mesh.size());
   state.counters["threads"] = settings.threads;
 }
+
+// [bench-scaling]
+/// What a second thread (or more) gains, measured in pairs as rtk_vs_embree is: every iteration
+/// builds the scene with one thread and then with settings.threads, Embree's build before RTK's
+/// each time, and each program's gain is the ratio of its two sums of times. Timed back to back,
+/// the one-thread and the many-thread builds share whatever the machine is doing, where runs of
+/// their own minutes apart do not.
+void scaling_rtk(benchmark::State& state, Scene* s, AccelConfig config) {
+  double embree_one = 0, embree_many = 0, rtk_one = 0, rtk_many = 0;
+  AccelConfig one = config;
+  one.threads = 1;
+  auto time = [](double& total, const auto& build) {
+    Timer timer;
+    build();
+    const double seconds = timer.seconds();
+    total += seconds;
+    return seconds;
+  };
+  for (auto _ : state) {
+    time(embree_one, [&] { EmbreeScene(s->mesh, 1); });
+    time(rtk_one, [&] { Accel(s->mesh, one); });
+    time(embree_many, [&] { EmbreeScene(s->mesh, settings.threads); });
+    state.SetIterationTime(time(rtk_many, [&] { Accel(s->mesh, config); }));
+  }
+  state.counters["rtk_scaling"] = rtk_many > 0 ? rtk_one / rtk_many : 0.0;
+  state.counters["embree_scaling"] = embree_many > 0 ? embree_one / embree_many : 0.0;
+  state.counters["rtk_vs_embree"] = rtk_many > 0 ? embree_many / rtk_many : 0.0;
+  set_rate(state, double(s->mesh.size()), "Mtris_per_s");
+  state.counters["triangles"] = double(s->mesh.size());
+  state.counters["threads"] = settings.threads;
+}
+// [bench-scaling]
 
 /// Times every iteration itself (manual time) and reports the rate of rays.
 template <class Trace>
@@ -320,6 +355,7 @@ void parse_settings(int& argc, char** argv) {
     else if (const char* v = value("--embree-isa=")) settings.embree_isa = v;
     else if (const char* v = value("--size=")) settings.size = std::strtod(v, nullptr);
     else if (arg == "--builds-only") settings.builds_only = true;
+    else if (arg == "--scaling") settings.scaling = true;
     else argv[kept++] = argv[i];
   }
   argc = kept;
@@ -363,6 +399,13 @@ int main(int argc, char** argv) {
   const std::vector<AccelConfig> configs = rtk_configs();
   for (auto& owned : scenes) {
     Scene* s = owned.get();
+    if (settings.scaling) {
+      const AccelConfig c{.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads};
+      benchmark::RegisterBenchmark(("scaling/" + s->name + "/" + builder_name(resolve_config(c))).c_str(),
+                                   scaling_rtk, s, c)
+          ->UseManualTime()->Unit(benchmark::kMillisecond);
+      continue;
+    }
     if (settings.builds_only) {
       const AccelConfig c{.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads};
       benchmark::RegisterBenchmark(("build/" + s->name + "/" + builder_name(resolve_config(c))).c_str(),

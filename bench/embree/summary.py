@@ -6,12 +6,14 @@ bench_render_kernels write (scripts/measure.sh embree runs all three):
     python3 bench/embree/summary.py build results.json
     python3 bench/embree/summary.py render embree_render.json
     python3 bench/embree/summary.py threads embree_build_*.json
+    python3 bench/embree/summary.py scaling embree_scaling_*.json
 
 `standing` gives, per RTK configuration and kind of ray, the range and median over the real
 meshes of RTK's speed as a ratio to Embree's in the same run; `build` the same for build speed
 and memory; `render` the renderer on both sets of kernels; `threads` RTK's default build
 against Embree's per scene on one and on two threads (runs of bench_embree --builds-only, one
-or more per thread count and scene size).
+or more per thread count and scene size); `scaling` what the second thread gives each builder,
+measured in pairs (runs of bench_embree --scaling).
 """
 import json
 import re
@@ -147,6 +149,35 @@ def threads(paths):
               f"{one[0]['bytes_per_tri']:.0f} | {mean([b['embree_bytes_per_tri'] for b in one]):.0f} |")
 
 
+def scaling(paths):
+    """One row per scene (a terrain per size): each builder's gain from the threads, its one- and
+    many-thread builds timed back to back in every iteration (the range over the runs)."""
+    rows = {}  # (scene, triangles) -> [benchmark of each run]
+    threads = set()
+    for path in paths:
+        _, runs = benchmarks(path)
+        for b in runs:
+            m = re.match(r"scaling/([^/]+)/rtk:", b["name"])
+            if m:
+                rows.setdefault((m.group(1), int(b["triangles"])), []).append(b)
+                threads.add(int(b["threads"]))
+    if len(threads) != 1:
+        sys.exit(f"summary.py scaling: runs on one thread count wanted, got {sorted(threads)}")
+    t = threads.pop()
+
+    def span(runs, key):
+        low, high = min(b[key] for b in runs), max(b[key] for b in runs)
+        return f"{low:.2f}" if f"{low:.2f}" == f"{high:.2f}" else f"{low:.2f}-{high:.2f}"
+
+    print(f"| scene | triangles | {t} threads / 1: RTK | Embree | RTK / Embree, {t} threads | runs |")
+    print("|---|---:|---:|---:|---:|---:|")
+    for scene, tris in sorted(rows, key=lambda k: (k[0] in PROCEDURAL, k[1] if k[0] in PROCEDURAL else 0)):
+        runs = rows[(scene, tris)]
+        name = f"{scene} (generated)" if scene in PROCEDURAL else scene
+        print(f"| {name} | {tris:,} | {span(runs, 'rtk_scaling')} | {span(runs, 'embree_scaling')} | "
+              f"{span(runs, 'rtk_vs_embree')} | {len(runs)} |")
+
+
 def render(path):
     _, runs = benchmarks(path)
     scenes = {"cornell": "Cornell box", "mesh:0": "Stanford bunny", "mesh:1": "Sponza"}
@@ -168,9 +199,11 @@ def main():
         {"build": build, "render": render}[sys.argv[1]](sys.argv[2])
     elif len(sys.argv) >= 4 and sys.argv[1] == "threads":
         threads(sys.argv[2:])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "scaling":
+        scaling(sys.argv[2:])
     else:
         sys.exit("usage: summary.py standing RESULTS.json [SSE4.json] | build RESULTS.json | "
-                 "render RENDER.json | threads BUILDS.json...")
+                 "render RENDER.json | threads BUILDS.json... | scaling SCALING.json...")
 
 
 if __name__ == "__main__":
