@@ -131,13 +131,14 @@ void ClippedTriangle::chop(int axis, std::span<const float> planes, std::span<Ex
     slab.upper[axis] = p;
     ExactBox piece;
     split_plane(*left, axis, double(p), &piece, &rest[i % 2]);
-    piece.clamp_to(slab);
-    out[i].extend(piece);
+    out[i].extend_clamped(piece, slab);
     left = &rest[i % 2];
     slab.lower[axis] = p;
   }
   slab.upper[axis] = box_.upper[axis];
-  out[planes.size()].extend(exact_bounds_in(*left, slab));
+  ExactBox last;
+  for (int i = 0; i < left->n; ++i) last.extend(left->v[i]);
+  out[planes.size()].extend_clamped(last, slab);
 }
 
 Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {
