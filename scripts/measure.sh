@@ -451,7 +451,7 @@ embree_build_threads() {
   cat "$file"
 }
 
-section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles
+section_embree_build() { # RTK's default build against Embree's on one and two threads: the real meshes, and terrains of 1M, 4M and 16M triangles; then embree_scaling
   build bench_embree
   embree_build_threads embree_build book/embree_build_threads.md
   run_section embree_scaling
