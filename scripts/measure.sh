@@ -425,26 +425,33 @@ section_embree() { # RTK against Embree 3: both tables (Embree's best ISA, then 
   run_section embree_build
 }
 
+# embree_build_runs NAME ARGS...: bench_embree with ARGS on the real meshes and on the generated
+# terrain scaled to 1M, 4M and 16M triangles; the paths of its JSON files are added to `runs`.
+embree_build_runs() {
+  local name=$1 meshes size
+  shift
+  meshes=$(embree_meshes)
+  RTK_SCENES=$meshes gbench ${name}_meshes "$B/bench/bench_embree" --procedural=0 --benchmark_min_time=1 "$@"
+  runs+=("$OUT/${name}_meshes.json")
+  # --size scales the generated terrain (131,072 triangles) by 8, 32 and 128; the larger the
+  # build, the longer each run, so that every pair is timed at least three times.
+  for size in 8 32 128; do
+    RTK_SCENES= gbench ${name}_terrain$size "$B/bench/bench_embree" --procedural=terrain --size=$size \
+      --benchmark_min_time=$((size / 8 + 2)) "$@"
+    runs+=("$OUT/${name}_terrain$size.json")
+  done
+}
+
 # embree_build_threads SECTION FILE: RTK's default build paired with Embree's on one thread and
 # on two, on the real meshes and on the generated terrain scaled to 1M, 4M and 16M triangles, in
 # two rounds; the table goes to FILE.
 embree_build_threads() {
-  local section=$1 file=$2 meshes t size round runs=()
-  meshes=$(embree_meshes)
+  local section=$1 file=$2 t round runs=()
   # Two rounds, each on one thread and then on two: build times of the large scenes move with
   # the price of fresh memory on a shared machine, and the table gives the range.
   for round in 1 2; do
     for t in 1 2; do
-      RTK_SCENES=$meshes gbench ${section}_meshes_${t}_$round "$B/bench/bench_embree" --builds-only \
-        --procedural=0 --threads=$t --benchmark_min_time=1
-      runs+=("$OUT/${section}_meshes_${t}_$round.json")
-      # --size scales the generated terrain (131,072 triangles) by 8, 32 and 128; the larger the
-      # build, the longer each run, so that every pair is timed at least three times.
-      for size in 8 32 128; do
-        RTK_SCENES= gbench ${section}_terrain${size}_${t}_$round "$B/bench/bench_embree" --builds-only \
-          --procedural=terrain --size=$size --threads=$t --benchmark_min_time=$((size / 8 + 2))
-        runs+=("$OUT/${section}_terrain${size}_${t}_$round.json")
-      done
+      embree_build_runs ${section}_${t}_$round --builds-only --threads=$t
     done
   done
   table "$section" "$file" python3 bench/embree/summary.py threads "${runs[@]}"
@@ -459,19 +466,11 @@ section_embree_build() { # RTK's default build against Embree's on one and two t
 
 section_embree_scaling() { # what two threads give RTK's default build and Embree's, each measured in pairs with one thread: the real meshes, and terrains of 1M, 4M and 16M triangles
   build bench_embree
-  local meshes size round runs=()
-  meshes=$(embree_meshes)
+  local round runs=()
   # Every iteration builds with one thread and then with two, back to back, for both builders;
   # two rounds, whose range the table gives.
   for round in 1 2; do
-    RTK_SCENES=$meshes gbench embree_scaling_meshes_$round "$B/bench/bench_embree" --scaling \
-      --procedural=0 --threads=2 --benchmark_min_time=1
-    runs+=("$OUT/embree_scaling_meshes_$round.json")
-    for size in 8 32 128; do
-      RTK_SCENES= gbench embree_scaling_terrain${size}_$round "$B/bench/bench_embree" --scaling \
-        --procedural=terrain --size=$size --threads=2 --benchmark_min_time=$((size / 8 + 2))
-      runs+=("$OUT/embree_scaling_terrain${size}_$round.json")
-    done
+    embree_build_runs embree_scaling_$round --scaling --threads=2
   done
   table embree_scaling book/embree_build_scaling.md python3 bench/embree/summary.py scaling "${runs[@]}"
   cat book/embree_build_scaling.md

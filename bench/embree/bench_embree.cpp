@@ -399,17 +399,11 @@ int main(int argc, char** argv) {
   const std::vector<AccelConfig> configs = rtk_configs();
   for (auto& owned : scenes) {
     Scene* s = owned.get();
-    if (settings.scaling) {
+    if (settings.scaling || settings.builds_only) {
       const AccelConfig c{.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads};
-      benchmark::RegisterBenchmark(("scaling/" + s->name + "/" + builder_name(resolve_config(c))).c_str(),
-                                   scaling_rtk, s, c)
-          ->UseManualTime()->Unit(benchmark::kMillisecond);
-      continue;
-    }
-    if (settings.builds_only) {
-      const AccelConfig c{.accel = "", .tri = "", .isa = best_isa(), .threads = settings.threads};
-      benchmark::RegisterBenchmark(("build/" + s->name + "/" + builder_name(resolve_config(c))).c_str(),
-                                   build_rtk, s, c)
+      const std::string name = std::string(settings.scaling ? "scaling/" : "build/") + s->name +
+                               "/" + builder_name(resolve_config(c));
+      benchmark::RegisterBenchmark(name.c_str(), settings.scaling ? scaling_rtk : build_rtk, s, c)
           ->UseManualTime()->Unit(benchmark::kMillisecond);
       continue;
     }

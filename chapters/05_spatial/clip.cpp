@@ -77,10 +77,16 @@ float round_up(double d) { return -round_down(-d); }
 
 bool finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-/// The polygon's exact bounds, kept inside `box`.
-ExactBox exact_bounds_in(const Polygon& poly, const Box3f& box) {
+/// The polygon's exact bounds.
+ExactBox exact_bounds(const Polygon& poly) {
   ExactBox b;
   for (int i = 0; i < poly.n; ++i) b.extend(poly.v[i]);
+  return b;
+}
+
+/// The polygon's exact bounds, kept inside `box`.
+ExactBox exact_bounds_in(const Polygon& poly, const Box3f& box) {
+  ExactBox b = exact_bounds(poly);
   b.clamp_to(box);
   return b;
 }
@@ -136,9 +142,7 @@ void ClippedTriangle::chop(int axis, std::span<const float> planes, std::span<Ex
     slab.lower[axis] = p;
   }
   slab.upper[axis] = box_.upper[axis];
-  ExactBox last;
-  for (int i = 0; i < left->n; ++i) last.extend(left->v[i]);
-  out[planes.size()].extend_clamped(last, slab);
+  out[planes.size()].extend_clamped(exact_bounds(*left), slab);
 }
 
 Box3f clip_triangle(const Vec3f& a, const Vec3f& b, const Vec3f& c, const Box3f& box) {
