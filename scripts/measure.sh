@@ -464,19 +464,26 @@ section_embree_build() { # RTK's default build against Embree's on one and two t
   run_section embree_scaling
 }
 
-section_embree_scaling() { # what two threads give RTK's default build and Embree's, each measured in pairs with one thread: the real meshes, and terrains of 1M, 4M and 16M triangles
-  build bench_embree
-  local round runs=()
+# embree_scaling_pairs SECTION FILE: what two threads give RTK's default build and Embree's,
+# each measured in pairs with one thread, on the real meshes and on the generated terrain scaled
+# to 1M, 4M and 16M triangles; the table goes to FILE.
+embree_scaling_pairs() {
+  local section=$1 file=$2 round runs=()
   # Every iteration builds with one thread and then with two, back to back, for both builders;
   # two rounds, whose range the table gives.
   for round in 1 2; do
-    embree_build_runs embree_scaling_$round --scaling --threads=2
+    embree_build_runs ${section}_$round --scaling --threads=2
   done
-  table embree_scaling book/embree_build_scaling.md python3 bench/embree/summary.py scaling "${runs[@]}"
-  cat book/embree_build_scaling.md
+  table "$section" "$file" python3 bench/embree/summary.py scaling "${runs[@]}"
+  cat "$file"
 }
 
-section_embree_second() { # RTK's default kernels and builds (one and two threads, meshes and terrains) against Embree once more, for the standing on a second machine
+section_embree_scaling() { # what two threads give RTK's default build and Embree's, each measured in pairs with one thread: the real meshes, and terrains of 1M, 4M and 16M triangles
+  build bench_embree
+  embree_scaling_pairs embree_scaling book/embree_build_scaling.md
+}
+
+section_embree_second() { # RTK's default kernels and builds (one and two threads, meshes and terrains) against Embree once more, for the standing on a second machine; then embree_second_scaling
   build bench_embree
   local meshes
   meshes=$(embree_meshes)
@@ -487,6 +494,12 @@ section_embree_second() { # RTK's default kernels and builds (one and two thread
   table embree_second book/embree_second.md python3 bench/embree/summary.py standing "$OUT/embree_second.json"
   table embree_second book/embree_second_build.md python3 bench/embree/summary.py build "$OUT/embree_second.json"
   embree_build_threads embree_second book/embree_second_threads.md
+  run_section embree_second_scaling
+}
+
+section_embree_second_scaling() { # embree_scaling's pairs of one- and two-thread builds, for the second machine
+  build bench_embree
+  embree_scaling_pairs embree_second_scaling book/embree_second_scaling.md
 }
 
 # A full run, in the book's order. A section may run parts that are sections of their own
@@ -495,7 +508,8 @@ section_embree_second() { # RTK's default kernels and builds (one and two thread
 # embree_second is the Embree comparison's part for a second machine.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
-       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_scaling embree_second)
+       ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_scaling embree_second
+       embree_second_scaling)
 
 # --- the machine ------------------------------------------------------------------------------
 
