@@ -505,7 +505,8 @@ section_embree_second_scaling() { # embree_scaling's pairs of one- and two-threa
 # A full run, in the book's order. A section may run parts that are sections of their own
 # (ch04 runs ch04_bins): those can be named alone, to remake one figure. Two are run only when
 # named: ch14_path_loop builds the path loop of an earlier commit to compare with, and
-# embree_second is the Embree comparison's part for a second machine.
+# embree_second (with embree_second_scaling, which it runs) is the Embree comparison's part for
+# a second machine.
 SECTIONS=(ch01 ch02 ch03 ch04 ch05 ch06 ch07 ch08 ch09 ch09_order ch09_packets ch11 ch12 ch13 ch14 ch15 ch16 embree)
 PARTS=(ch02_tree ch03_ablation ch04_bins ch04_growth ch04_occluders ch04_rotations ch05_budget ch06_speed
        ch12_gallery ch14_convergence ch14_equal_time ch14_path_loop embree_build embree_scaling embree_second

@@ -58,11 +58,11 @@ bool sort_rays(std::span<const Ray> rays, const RayOrderKey& key, const RayOrder
   // every ray's index at its key's next place. Equal keys keep the order they were given in.
   // Only the indices are scattered, four bytes each where a ray has thirty-six; the rays are
   // then copied in sorted order, written one after the other and read from scattered places,
-  // each asked of the cache a few copies ahead. (Scattering the rays
-  // themselves left most of the sort's time to stores waiting on lines from memory, which
-  // some processors commit one by one.) With several threads, each counts and places one
-  // contiguous part of the batch, and a key's places go to the parts in turn, so the order is
-  // the same; each then copies one part of the sorted batch.
+  // each asked of the cache a few copies ahead. (Scattering the rays themselves left most of
+  // the sort's time to stores waiting on lines from memory, which some processors commit one
+  // by one.) With several threads, each counts and places one contiguous part of the batch,
+  // and a key's places go to the parts in turn, so the order is the same; each then copies
+  // one part of the sorted batch.
   const size_t parts = std::clamp<size_t>(size_t(threads), 1, n / kRaysPerPart + 1);
   auto part_range = [&](size_t p) { return std::pair{p * n / parts, (p + 1) * n / parts}; };
   auto for_each_part = [&](auto&& body) {
