@@ -98,8 +98,8 @@ struct SortedRays {
 /// Sorts `rays` into `sorted` (storage reused from batch to batch) with one counting sort: a
 /// pass that counts each key, one that puts every ray's index at its key's next place, and one
 /// that copies the rays in that order, each cut into up to `threads` parts that the threads of
-/// the caller's TBB task arena share (the result does not depend on how many). Returns false (and leaves `sorted` empty) when the policy says to
-/// trace the batch as given.
+/// the caller's TBB task arena share (the result does not depend on how many). Returns false
+/// (and leaves `sorted` empty) when the policy says to trace the batch as given.
 bool sort_rays(std::span<const Ray> rays, const RayOrderKey& key, const RayOrderPolicy& policy,
                SortedRays& sorted, int threads = 1);
 
